@@ -1,0 +1,34 @@
+// Exceptions thrown by the RCI client library (API.md, "Exceptions"; SPEC.md §7).
+// Every one is an xmate::XmateException, itself a std::runtime_error with a readable message.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace xmate {
+
+class XmateException : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// TCP/UDP thread creation failed or the connection broke.
+class NetworkException : public XmateException { public: using XmateException::XmateException; };
+// UDP receive timed out or a datagram had the wrong length (usually a version mismatch).
+class UdpException : public XmateException { public: using XmateException::XmateException; };
+// TCP connect/read/write failed: check the controller's IP address and port.
+class TcpException : public XmateException { public: using XmateException::XmateException; };
+// Registering or running the control callback failed.
+class EventException : public XmateException { public: using XmateException::XmateException; };
+// The controller answered a TCP request with something this library does not understand.
+class ProtocolException : public XmateException { public: using XmateException::XmateException; };
+// The controller refused a TCP command.
+class CommandException : public XmateException { public: using XmateException::XmateException; };
+// Real-time setup (scheduling, memory locking) failed where it was required.
+class RealtimeException : public XmateException { public: using XmateException::XmateException; };
+// A MOVEJ/MOVEL/MOVEC (or a planner) could not plan the motion: unreachable, degenerate, limits.
+class MotionException : public XmateException { public: using XmateException::XmateException; };
+// A call that is not allowed in the current state (for example motion while dragging).
+class InvalidOperationException : public XmateException { public: using XmateException::XmateException; };
+
+}  // namespace xmate

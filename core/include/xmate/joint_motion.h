@@ -1,0 +1,39 @@
+// Jerk-limited joint-space S-curve from rest to rest, all joints arriving together (API.md).
+// Limits are those of SPEC.md §5 (velocity, acceleration, jerk) times speed_ratio.
+#pragma once
+
+#include <array>
+
+#include <xmate/types.h>
+
+namespace xmate {
+
+class JointMotionGenerator {
+ public:
+  // speed_ratio in (0, 1]; throws std::invalid_argument outside it or for a non-finite goal.
+  // type selects the joint limits (XMATE7_PRO/XMATE3_PRO share them; 6-axis models ignore q_goal[6]).
+  JointMotionGenerator(double speed_ratio, const std::array<double, 7>& q_goal,
+                       XmateType type = XMATE7_PRO);
+
+  // Plans from q_start. Cheap to call again with the same q_start (vendor programs call it every
+  // cycle): the plan is only recomputed when q_start changes.
+  void calculateSynchronizedValues_joint(const std::array<double, 7>& q_start);
+
+  // Writes the offset from q_start at time t (s) into delta_q; returns true once t >= GetTime(),
+  // when delta_q is exactly q_goal - q_start.
+  bool calculateDesiredValues_joint(double t, std::array<double, 7>& delta_q) const;
+
+  // Duration of the planned motion in seconds (0 before planning or for a zero move).
+  double GetTime() const;
+
+  // Extension: velocity and acceleration of the plan at time t (rad/s, rad/s^2).
+  void calculateDerivatives_joint(double t, std::array<double, 7>& dq, std::array<double, 7>& ddq) const;
+
+ private:
+  // Owned by core/src/planning/joint_motion.cpp; see there.
+  double speed_ratio_;
+  std::array<double, 7> q_goal_;
+  XmateType type_;
+};
+
+}  // namespace xmate

@@ -1,0 +1,9 @@
+// The robot models RCI Studio knows, as the vendor API names them (API.md, "Types").
+#pragma once
+
+namespace xmate {
+
+// Unscoped on purpose: vendor programs write both XMATE7_PRO and XmateType::XMATE7_PRO.
+enum XmateType { XMATE3_PRO, XMATE7_PRO, XMATE3, XMATE7 };
+
+}  // namespace xmate
