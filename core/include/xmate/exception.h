@@ -2,8 +2,13 @@
 // Every one is an xmate::XmateException, itself a std::runtime_error with a readable message.
 #pragma once
 
+#include <array>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <xmate/rci_types.h>
 
 namespace xmate {
 
@@ -20,6 +25,21 @@ class UdpException : public XmateException { public: using XmateException::Xmate
 class TcpException : public XmateException { public: using XmateException::XmateException; };
 // Registering or running the control callback failed.
 class EventException : public XmateException { public: using XmateException::XmateException; };
+// One cycle of the control loop as the client saw it.
+struct ControlRecord {
+  RCI::robot::RobotState state;
+  RCI::robot::RobotCommand command;  // what the client answered (zero if it had not answered)
+};
+
+// The controller reported error bits (or the exchange became unstable) and ended Control().
+// The message names the bits; log holds the last cycles before the error, oldest first.
+class ControlException : public XmateException {
+ public:
+  ControlException(const std::string& what, std::array<bool, 20> errors, std::vector<ControlRecord> log)
+      : XmateException(what), errors(errors), log(std::move(log)) {}
+  std::array<bool, 20> errors;
+  std::vector<ControlRecord> log;
+};
 // The controller answered a TCP request with something this library does not understand.
 class ProtocolException : public XmateException { public: using XmateException::XmateException; };
 // The controller refused a TCP command.

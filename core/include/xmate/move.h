@@ -1,0 +1,30 @@
+// Blocking point-to-point moves built on Robot::Control (API.md, "Moves"): MOVEJ in joint space,
+// MOVEL on a straight line, MOVEC on a circular arc, all with jerk-limited timing.
+#pragma once
+
+#include <array>
+
+#include <xmate/model.h>
+#include <xmate/robot.h>
+
+namespace xmate {
+
+// A TCP pose (4x4 row-major, base frame) with an optional arm angle.
+struct cart_pos {
+  std::array<double, 16> pos{};
+  bool psi_valid = false;
+  double psi = 0;
+};
+
+// speed_ratio in (0, 1]. Throw MotionException when planning fails (unreachable, collinear arc
+// points, limits) and ControlException when the controller aborts. Return true when the target
+// was reached.
+bool MOVEJ(double speed_ratio, const std::array<double, 7>& q_start, const std::array<double, 7>& q_target,
+           Robot& robot);
+bool MOVEL(double speed_ratio, cart_pos& start, cart_pos& target, Robot& robot);
+bool MOVEL(double speed_ratio, cart_pos& start, cart_pos& target, Robot& robot, XmateModel& model);
+bool MOVEC(double speed_ratio, cart_pos& start, cart_pos& mid, cart_pos& target, Robot& robot);
+bool MOVEC(double speed_ratio, cart_pos& start, cart_pos& mid, cart_pos& target, Robot& robot,
+           XmateModel& model);
+
+}  // namespace xmate

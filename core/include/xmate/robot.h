@@ -1,0 +1,81 @@
+// xmate::Robot: the client side of RCI (API.md, "xmate::Robot"). TCP commands run on the
+// caller's thread; the 1 kHz UDP exchange runs on a dedicated real-time thread per robot.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <xmate/exception.h>
+#include <xmate/rci_types.h>
+#include <xmate/types.h>
+
+namespace xmate {
+
+namespace client { class Connection; }
+
+class Robot {
+ public:
+  // Nothing is sent until the first call that needs the controller (lazy connect).
+  Robot(const std::string& ip, uint16_t port, XmateType type = XMATE7_PRO);
+  ~Robot();
+  Robot(const Robot&) = delete;
+  Robot& operator=(const Robot&) = delete;
+
+  // Opens the TCP session and the UDP exchange. Throws TcpException / NetworkException with the
+  // address and the reason; no-op when connected.
+  void connect();
+  // Drops the session and opens it again (after a reboot, a cable pull). true on success.
+  bool reconnect();
+
+  // ---- Motion -----------------------------------------------------------------------------
+  void startMove(RCI::robot::StartMoveRequest::ControllerMode controller_mode,
+                 RCI::robot::StartMoveRequest::MotionGeneratorMode motion_mode);
+  void stopMove();
+  // Calls the callback once per 1 ms cycle with the newest state and sends what it returns;
+  // blocks until the callback returns MotionFinished(...). Throws ControlException when the
+  // controller reports error bits, InvalidOperationException when startMove() did not select a
+  // matching mode.
+  void Control(JointControl callback);
+  void Control(CartesianControl callback);
+  void Control(TorqueControl callback);
+  // Waits for the next state from the controller (UdpException after 1 s without one).
+  RCI::robot::RobotState receiveRobotState();
+
+  // ---- Settings (ranges in SPEC.md §2; violations throw std::invalid_argument) --------------
+  void setCollisionBehavior(const std::array<double, 7>& upper_torque_thresholds_nominal);
+  void setCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame,
+                         bool active = true);
+  void setJointImpedance(const std::array<double, 7>& K_theta);
+  void setCartesianImpedance(const std::array<double, 6>& K_x);
+  void setCoor(const std::array<double, 16>& F_T_EE);
+  void setLoad(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia);
+  void setFilters(double joint_hz, double cartesian_hz, double torque_hz);
+  void setCartImpDesiredTau(const std::array<double, 6>& tau);
+  bool setMotorPower(int state);
+  int getMotorState();
+  bool setDO(RCI::robot::DOSIGNAL signal, bool state);
+  bool getDI(RCI::robot::DISIGNAL signal);
+  void setJointLimit(const std::array<double, 7>& upper_deg, const std::array<double, 7>& lower_deg,
+                     bool auto_limit);
+  void setFcCoor(const std::array<double, 16>& frame, int fc_type);  // 1 world, 2 tool, 3 path
+  void startDrag(int drag_space, int drag_type);  // space 1 joint, 2 Cartesian; type 1 translation, 2 rotation, 3 free
+  void stopDrag();
+  void automaticErrorRecovery();
+  void rebootRobot();
+  int getSafetyStopState();  // 1 none, 2 ESTOP, 3 GSTOP
+
+  // ---- Extensions (RCI Studio) ----------------------------------------------------------------
+  XmateType type() const;
+  // Tool and payload last set through this robot (identity / zero until set).
+  std::array<double, 16> toolFrame() const;
+  void load(double& mass, std::array<double, 3>& center, std::array<double, 9>& inertia) const;
+  // The session behind this robot, for RCI Studio's own tools (timing statistics, state stream).
+  client::Connection& connection();
+
+ private:
+  std::unique_ptr<client::Connection> connection_;
+};
+
+}  // namespace xmate
