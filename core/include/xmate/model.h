@@ -15,21 +15,23 @@ class Robot;
 
 class XmateModel {
  public:
-  // Return codes of GetJointPos (0 = success); the vendor manual groups them in pairs.
+  // Return codes of GetJointPos (0 = success); the vendor manual groups them in pairs. Exact
+  // criteria, the order of the checks and the singularity measures: docs/kinematics.md.
   enum IkResult : int {
     kIkOk = 0,
-    kIkTooFar = -1,            // wrist centre beyond the arm's reach
-    kIkTooClose = -2,          // wrist centre inside the arm's inner dead zone
-    kIkInvalidPose = -3,       // pose is not a rigid transform (NaN, non-orthonormal rotation, bad last row)
-    kIkArmJointTooFast = -4,   // a joint of the arm (J1..J4; 6-axis J1..J3) would exceed its rated speed
-    kIkWristJointTooFast = -5, // a wrist joint would exceed its rated speed
-    kIkAboveSoftLimit = -6,    // every solution puts a joint above its upper soft limit
-    kIkBelowSoftLimit = -7,    // every solution puts a joint below its lower soft limit
+    kIkTooFar = -1,            // wrist centre beyond the stretched arm's reach
+    kIkTooClose = -2,          // wrist centre closer to the shoulder than the elbow can fold
+    kIkInvalidPose = -3,       // pose is not a rigid transform (NaN/Inf, rotation not orthonormal within
+                               // 1e-6, last row not 0 0 0 1), or q_init / psi not finite
+    kIkArmJointTooFast = -4,   // an arm joint (J1..J4; 6-axis J1..J3) would exceed its rated speed
+    kIkWristJointTooFast = -5, // only a wrist joint would exceed its rated speed
+    kIkAboveSoftLimit = -6,    // every solution breaks a soft limit; the nearest first breaks an upper one
+    kIkBelowSoftLimit = -7,    // ... a lower one
     kIkSingular = -8,          // the pose is (within 1e-6) a shoulder, elbow or wrist singularity
   };
 
-  // robot may be nullptr: an offline model. With a robot, the model starts with the tool (setCoor)
-  // and payload (setLoad) last set through that robot.
+  // robot may be nullptr: an offline model. The model starts with no tool and no payload; set them
+  // with SetCoor / SetLoad (the robot's own tool and load are not read yet: see docs/kinematics.md).
   XmateModel(Robot* robot, XmateType type);
   explicit XmateModel(XmateType type);
   ~XmateModel();
@@ -41,8 +43,11 @@ class XmateModel {
   // Forward kinematics: flange pose in the base frame, or TCP pose after SetCoor.
   std::array<double, 16> GetCartPose(const std::array<double, 7>& q);
 
-  // Closed-form inverse kinematics of the flange/TCP pose. 7-axis models use the arm angle psi;
-  // 6-axis models ignore it. Picks the solution nearest q_init. Returns an IkResult.
+  // Closed-form inverse kinematics of the flange/TCP pose. 7-axis models use the arm angle psi
+  // (see GetPsi); 6-axis models ignore it. Of the up to 8 branch solutions, picks the one nearest
+  // q_init within the soft limits, then checks that reaching it from q_init within one
+  // SetSpeedCheckInterval() step (default 1 ms) keeps every joint within its rated speed.
+  // Returns an IkResult; q_out is written only on kIkOk.
   int GetJointPos(const std::array<double, 16>& pose, double psi, const std::array<double, 7>& q_init,
                   std::array<double, 7>& q_out);
 
@@ -65,7 +70,9 @@ class XmateModel {
 
   // ---- Extensions beyond the vendor API (RCI Studio) ----
 
-  // Arm angle of configuration q (7-axis), as GetJointPos expects it; 0 on 6-axis models.
+  // Arm angle of configuration q (7-axis), as GetJointPos expects it; 0 on 6-axis models. psi is
+  // the rotation about the shoulder->wrist line from the reference configuration (q3 = 0, same
+  // q4, joint 1 facing the wrist) to q; radians in (-pi, pi].
   double GetPsi(const std::array<double, 7>& q);
   // Joint-space mass matrix M(q), 7x7 row-major (unused rows/columns zero on 6-axis models).
   std::array<double, 49> MassMatrix(const std::array<double, 7>& q);

@@ -1,0 +1,124 @@
+// JointMotionGenerator (xmate/joint_motion.h): every joint follows q_i(t) = q_start_i + delta_i s(t)
+// with one normalised double-S profile s: 0 -> 1, so all joints move on a straight line in joint
+// space, start and stop together, and none exceeds its own limits (docs/planning.md).
+#include <xmate/joint_motion.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include <xmate/exception.h>
+
+#include "model/robot_spec.h"
+#include "planning/double_s.h"
+
+namespace xmate {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+
+void requireSpeedRatio(double speed_ratio) {
+  if (std::isfinite(speed_ratio) && speed_ratio > 0 && speed_ratio <= 1) return;
+  std::ostringstream msg;
+  msg << "JointMotionGenerator: speed_ratio = " << speed_ratio << " is outside (0, 1]; pass e.g. 0.2";
+  throw std::invalid_argument(msg.str());
+}
+
+// Throws std::invalid_argument unless every joint the model has is finite and within its range.
+void requireInRange(const std::array<double, 7>& q, const model::RobotSpec& spec, const char* what) {
+  for (int i = 0; i < spec.dof; ++i) {
+    if (std::isfinite(q[i]) && q[i] >= spec.q_min[i] && q[i] <= spec.q_max[i]) continue;
+    std::ostringstream msg;
+    msg << "JointMotionGenerator: " << what << "[" << i << "] = " << q[i] << " rad is outside joint " << i + 1
+        << "'s range [" << spec.q_min[i] << ", " << spec.q_max[i] << "] rad (" << spec.q_min[i] * kRadToDeg
+        << " .. " << spec.q_max[i] * kRadToDeg << " deg) of the " << spec.display_name
+        << "; pass a finite value inside it";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+// The limits of the normalised profile s: 0 -> 1. Joint i moves delta_i * s, so its velocity is
+// delta_i * ds/dt: the tightest joint sets each limit of s (joints that do not move set none).
+struct NormalisedLimits {
+  double v, a, j;
+};
+NormalisedLimits normalisedLimits(const std::array<double, 7>& delta, const model::RobotSpec& spec,
+                                  double speed_ratio) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  NormalisedLimits s{kNone, kNone, kNone};
+  for (int i = 0; i < spec.dof; ++i) {
+    const double d = std::abs(delta[i]);
+    if (d == 0) continue;
+    s.v = std::min(s.v, spec.dq_max[i] * speed_ratio / d);
+    s.a = std::min(s.a, spec.ddq_max[i] * speed_ratio / d);
+    s.j = std::min(s.j, spec.jerk_max[i] * speed_ratio / d);
+  }
+  return s;
+}
+
+void requirePlanned(bool planned) {
+  if (!planned)
+    throw MotionException(
+        "JointMotionGenerator: no plan yet; call calculateSynchronizedValues_joint(q_start) first");
+}
+
+void requireTime(double t) {
+  if (std::isnan(t))
+    throw std::invalid_argument(
+        "JointMotionGenerator: time t is NaN; pass the time since the motion began, in s");
+}
+
+}  // namespace
+
+JointMotionGenerator::JointMotionGenerator(double speed_ratio, const std::array<double, 7>& q_goal,
+                                           XmateType type)
+    : speed_ratio_(speed_ratio), q_goal_(q_goal), type_(type) {
+  requireSpeedRatio(speed_ratio);
+  requireInRange(q_goal, model::robotSpec(type), "q_goal");
+}
+
+void JointMotionGenerator::calculateSynchronizedValues_joint(const std::array<double, 7>& q_start) {
+  if (planned_ && q_start == q_start_) return;  // vendor programs call this every cycle
+
+  const model::RobotSpec& spec = model::robotSpec(type_);
+  requireInRange(q_start, spec, "q_start");
+  std::array<double, 7> delta{};
+  for (int i = 0; i < spec.dof; ++i) delta[i] = q_goal_[i] - q_start[i];
+
+  const NormalisedLimits limits = normalisedLimits(delta, spec, speed_ratio_);
+  // A zero move has no limiting joint; any finite limits give its zero-duration profile.
+  const bool moves = std::isfinite(limits.v);
+  profile_ = moves ? planning::planDoubleS(1.0, limits.v, limits.a, limits.j) : planning::DoubleSProfile{};
+  delta_ = delta;
+  q_start_ = q_start;
+  planned_ = true;
+}
+
+bool JointMotionGenerator::calculateDesiredValues_joint(double t, std::array<double, 7>& delta_q) const {
+  requirePlanned(planned_);
+  requireTime(t);
+  if (t >= profile_.duration) {
+    delta_q = delta_;
+    return true;
+  }
+  const double s = planning::sampleDoubleS(profile_, t).p;
+  for (int i = 0; i < 7; ++i) delta_q[i] = delta_[i] * s;
+  return false;
+}
+
+double JointMotionGenerator::GetTime() const { return planned_ ? profile_.duration : 0.0; }
+
+void JointMotionGenerator::calculateDerivatives_joint(double t, std::array<double, 7>& dq,
+                                                      std::array<double, 7>& ddq) const {
+  requirePlanned(planned_);
+  requireTime(t);
+  const planning::DoubleSSample s = planning::sampleDoubleS(profile_, t);
+  for (int i = 0; i < 7; ++i) {
+    dq[i] = delta_[i] * s.v;
+    ddq[i] = delta_[i] * s.a;
+  }
+}
+
+}  // namespace xmate
