@@ -2,7 +2,8 @@
 # The README's two commands:
 #   packaging/bootstrap.sh run    install what is missing, build, start RCI Studio on the built-in simulator
 #   packaging/bootstrap.sh test   install what is missing, build, run every test
-# Build trees: build/ (RelWithDebInfo); the test command also uses build-asan/ (sanitizers).
+# Build trees: build/ (RelWithDebInfo); the test command also uses build-asan/ (ASan + UBSan) and
+# build-fuzz/ (clang, libFuzzer).
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
@@ -26,6 +27,19 @@ case "$mode" in
     configure build -DCMAKE_BUILD_TYPE=RelWithDebInfo
     cmake --build build -j "$jobs"
     (cd build && ctest --output-on-failure -j "$jobs")
+    # The core and its tests again under AddressSanitizer + UBSan: no GUI, no benchmarks; -O1 with
+    # line tables keeps the build short. Tests labelled no_asan cannot run under ASan. Real-time
+    # scheduling is off: SCHED_FIFO threads slowed down by ASan could starve the parallel tests.
+    configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
+      -DRCI_SANITIZE=ON -DRCI_BUILD_GUI=OFF -DRCI_BUILD_BENCH=OFF
+    cmake --build build-asan -j "$jobs"
+    (cd build-asan && RCI_NO_REALTIME=1 ctest --output-on-failure -j "$jobs" -LE no_asan)
+    # libFuzzer (clang): every decoder for a bounded time from a seed corpus made in the build.
+    configure build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+      "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" \
+      "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
+      -DRCI_BUILD_FUZZERS=ON -DRCI_BUILD_TESTS=OFF -DRCI_BUILD_GUI=OFF -DRCI_BUILD_BENCH=OFF
+    RCI_NO_REALTIME=1 cmake --build build-fuzz -j "$jobs" --target fuzz_run
     ;;
   *)
     echo "usage: packaging/bootstrap.sh run|test" >&2

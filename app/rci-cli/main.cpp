@@ -1,29 +1,40 @@
-// rci-cli: headless tools for xMate robots. With no arguments it describes the default model.
+// rci-cli: headless tools for xMate robots (docs/client.md). Without arguments it describes the
+// default model; subcommands read a robot's state live, check the machine's real-time setup, and
+// benchmark the 1 kHz loop and the client's cost per cycle.
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
-#include "model/robot_spec.h"
+#include <xmate/exception.h>
 
-namespace {
-
-void printModel(const xmate::model::RobotSpec& s) {
-  std::printf("%s (%s), %d axes\n", std::string(s.display_name).c_str(), std::string(s.name).c_str(), s.dof);
-  std::printf("  joint   q_min    q_max   dq_max  ddq_max  jerk_max  tau_max\n");
-  for (int i = 0; i < s.dof; ++i)
-    std::printf("  J%-4d %7.1f  %7.1f  %7.3f  %7.1f  %8.0f  %7.1f\n", i + 1, s.q_min[i] * 180 / 3.141592653589793,
-                s.q_max[i] * 180 / 3.141592653589793, s.dq_max[i], s.ddq_max[i], s.jerk_max[i], s.tau_max[i]);
-}
-
-}  // namespace
+#include "cli.h"
 
 int main(int argc, char** argv) {
-  const char* name = argc > 2 && std::strcmp(argv[1], "model") == 0 ? argv[2] : "xmate7_pro";
-  const auto* spec = xmate::model::findRobotSpec(name);
-  if (!spec) {
-    std::fprintf(stderr, "rci-cli: unknown model '%s' (known: xmate3_pro, xmate7_pro, xmate3, xmate7)\n", name);
+  using namespace rci_cli;
+  std::vector<std::string> words(argv + 1, argv + argc);
+  try {
+    if (words.empty()) return runModel(Args({}));
+    const std::string command = words[0];
+    if (command == "help" || command == "--help" || command == "-h") {
+      std::fputs(usage().c_str(), stdout);
+      return 0;
+    }
+    if (command == "model") return runModel(Args({words.begin() + 1, words.end()}));
+    if (command == "state") return runState(Args({words.begin() + 1, words.end()}));
+    if (command == "doctor") return runDoctor(Args({words.begin() + 1, words.end()}));
+    if (command == "bench") {
+      if (words.size() < 2) throw UsageError("bench needs 'loop' or 'client'");
+      if (words[1] == "loop") return runBenchLoop(Args({words.begin() + 2, words.end()}));
+      if (words[1] == "client") return runBenchClient(Args({words.begin() + 2, words.end()}));
+      throw UsageError("unknown bench '" + words[1] + "' (known: loop, client)");
+    }
+    throw UsageError("unknown command '" + command + "'");
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "rci-cli: %s\n\n%s", e.what(), usage().c_str());
     return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "rci-cli: %s\n", e.what());
+    return 1;
   }
-  printModel(*spec);
-  return 0;
 }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include <xmate/rci_types.h>
 #include <xmate/types.h>
@@ -39,10 +40,17 @@ struct SimStatus {
   std::array<double, 6> external_wrench{};  // applied by the scene, base frame, at the TCP
   uint64_t cycles = 0;
   uint64_t lost_commands = 0;  // since power-up
+  // Added for the GUI, rci-sim and tests:
+  uint64_t consecutive_lost_commands = 0;        // in the running motion
+  std::array<double, 7> external_joint_torque{};  // the collision detector's estimate, Nm
+  double actual_payload_mass = 0;                // kg, what really hangs on the flange
+  bool actual_payload_follows_load = true;       // false after setActualPayload()
 };
 
 class Controller {
  public:
+  // Loads the model's robot description (URDF and inertias, model/urdf_loader.h); throws
+  // std::runtime_error naming the places it looked if the description cannot be found.
   explicit Controller(const SimConfig& config = {});
   ~Controller();
   Controller(const Controller&) = delete;
@@ -72,9 +80,21 @@ class Controller {
   void setGuardStop(bool active);
   void setDigitalInput(int index, bool level);  // 0..5 = DI0_0..DI1_1
   void setDoToDiLoopback(bool on);
+  // What really hangs on the flange (flange frame: kg, m, kg m^2 about the centre of mass,
+  // row-major). Until this is called the actual payload is whatever setLoad configured; a
+  // different one makes gravity compensation and the collision detector see the difference, as a
+  // wrong setLoad does on the real robot. Throws std::invalid_argument for a negative or
+  // non-finite mass, a non-finite centre or an inertia that is not finite and symmetric.
+  void setActualPayload(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia);
+  // Back to "the actual payload is the configured load".
+  void followConfiguredLoad();
 
+  // Allocation-free snapshot (safe to take every cycle).
   SimStatus status() const;
   const SimConfig& config() const;
+  // Why the last refused TCP request was refused: a sentence naming the call, the value and the
+  // rule ("" if nothing was refused yet). For logs, the GUI and tests.
+  const std::string& lastRefusal() const;
 
  private:
   struct Impl;

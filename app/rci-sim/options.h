@@ -1,0 +1,39 @@
+// rci-sim's command line: the options, their defaults, and their validation.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "model/robot_spec.h"
+
+namespace rcisim {
+
+struct Options {
+  const xmate::model::RobotSpec* model = nullptr;  // --model (default xmate7_pro)
+  std::string bind_ip = "127.0.0.1";
+  uint16_t port = 1337;
+  bool lockstep = false;
+  int lockstep_timeout_ms = 200;
+  std::optional<uint16_t> control_port;
+  std::string control_bind_ip = "127.0.0.1";
+  bool loopback_io = false;
+  bool motors_on = false;
+  bool print_port = false;
+  bool realtime = true;
+  int reboot_pause_ms = 2000;
+  bool help = false;
+};
+
+// A wrong command line; the message says which option and what is allowed.
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+Options parseOptions(int argc, const char* const* argv);
+std::string usageText();
+// True for 127.x.y.z and "localhost".
+bool isLoopbackAddress(const std::string& ip);
+
+}  // namespace rcisim

@@ -1,0 +1,222 @@
+// client::Connection on the caller's side: opening and closing the session (TCP, UDP, the
+// real-time thread, the Connect handshake), TCP requests, waiting for states, and Control() runs.
+#include "client/connection.h"
+
+#include <cstdio>
+#include <thread>
+
+#include "client/connection_rt.h"
+#include "net/clock.h"
+
+namespace xmate::client {
+namespace {
+
+void logToStderr(const std::string& line) { std::fprintf(stderr, "rci: %s\n", line.c_str()); }
+
+// The UDP socket's kernel buffers: room for ~50 states, so a short stall of the real-time thread
+// loses nothing, while a long one does not queue seconds of stale states.
+constexpr int kUdpReceiveBufferBytes = 64 * 1024;
+constexpr int kUdpSendBufferBytes = 64 * 1024;
+
+}  // namespace
+
+Connection::Connection(const std::string& ip, uint16_t port, XmateType type, SessionOptions options)
+    : ip_(ip == "localhost" ? "127.0.0.1" : ip),
+      port_(port),
+      type_(type),
+      options_(std::move(options)),
+      rt_(std::make_unique<Realtime>()),
+      samples_(std::make_unique<SampleRing>()) {
+  net::makeEndpoint(ip_, port_);  // throws std::invalid_argument for a malformed address, before any I/O
+}
+
+Connection::~Connection() { close(); }
+
+bool Connection::isOpen() const { return tcp_.isOpen() && thread_.joinable(); }
+
+void Connection::open() {
+  if (isOpen()) return;
+  close();  // leftovers of a broken session
+  const net::Endpoint controller = net::makeEndpoint(ip_, port_);
+  tcp_.open(controller, options_.timeouts.connect_ms);
+  try {
+    Realtime& rt = *rt_;
+    const std::string local_ip = [&] {
+      const std::string s = tcp_.local().toString();
+      return s.substr(0, s.rfind(':'));
+    }();
+    rt.udp.bind(local_ip, 0);
+    rt.udp.setBufferSizes(kUdpReceiveBufferBytes, kUdpSendBufferBytes);
+    udp_port_ = rt.udp.localPort();
+    rt.controller = controller;
+    startRealtimeThread();
+    handshake();
+    remembered_.move_armed = false;  // a new session has no motion started
+  } catch (const XmateException&) {
+    close();
+    throw;
+  } catch (const std::exception& e) {
+    close();
+    throw NetworkException(std::string("connect: cannot set up the real-time exchange: ") + e.what());
+  }
+}
+
+void Connection::close() {
+  stopRealtimeThread();
+  tcp_.close();
+  rt_->udp.close();
+  udp_port_ = 0;
+}
+
+void Connection::startRealtimeThread() {
+  Realtime& rt = *rt_;
+  rt.dof = type_ == XMATE3 || type_ == XMATE7 ? 6 : 7;
+  rt.session_start_ns = net::monotonicNs();
+  rt.silence_limit_ns = int64_t(options_.timeouts.control_silence_ms) * 1'000'000;
+  rt.try_realtime = options_.realtime;
+  rt.realtime_priority = options_.realtime_priority;
+  rt.samples = samples_.get();
+  rt.stop.store(false);
+  rt.started.store(0);
+  rt.have_state = false;
+  rt.run_active = false;
+  rt.last_id = 0;
+  rt.counters = {};
+  rt.period_stats.reset();
+  rt.cost_stats.reset();
+  rt.wrong_length_count.store(0);
+  rt.hold_kind.store(0);
+  rt.last_answered_id = 0;
+  rt.latest_base = rt.latest.version();
+  try {
+    thread_ = std::thread(runRealtimeThread, std::ref(rt));
+  } catch (const std::system_error& e) {
+    throw NetworkException(std::string("connect: cannot start the real-time thread: ") + e.what());
+  }
+  rt.started.wait(0, std::memory_order_acquire);  // hand-off: atomic flag; status is written before it
+  if (!rt.status.fifo || !rt.status.memory_locked) {
+    const auto& log = options_.log ? options_.log : logToStderr;
+    log("the real-time thread runs with " + rt.status.describe() +
+        "; packets may be lost under load (see `rci-cli doctor`)");
+  }
+}
+
+void Connection::stopRealtimeThread() {
+  if (!thread_.joinable()) return;
+  rt_->stop.store(true, std::memory_order_release);
+  thread_.join();
+}
+
+void Connection::handshake() {
+  protocol::ConnectRequest request;
+  request.udp_port = udp_port_;
+  const auto payload = this->request("connect", request, options_.timeouts.connect_ms);
+  protocol::ByteResponse response;
+  if (protocol::decodePayload(payload.data(), payload.size(), response) != protocol::DecodeStatus::kOk)
+    throw ProtocolException("connect: the controller's ConnectResponse is " + std::to_string(payload.size()) +
+                            " bytes, not 5; it speaks another protocol version");
+  if (response.value == uint8_t(protocol::ConnectStatus::kIncompatibleLibraryVersion))
+    throw ProtocolException(
+        "connect: the controller at " + ip_ + ":" + std::to_string(port_) +
+        " refused the session: incompatible library version. This client speaks the RCI wire format of "
+        "client SDK 1.4 (RobotState 1247 bytes, RobotCommand 290 bytes); use a client library that "
+        "matches the controller's RCI version, or update the controller");
+  if (response.value != uint8_t(protocol::ConnectStatus::kSuccess))
+    throw ProtocolException("connect: unknown ConnectResponse status " + std::to_string(response.value));
+}
+
+std::vector<uint8_t> Connection::requestFrame(const char* call, const std::function<protocol::Frame(uint32_t)>& encode,
+                                              protocol::Command command, int timeout_ms) {
+  try {
+    return tcp_.exchange(call, encode, command, timeout_ms);
+  } catch (const TcpException&) {
+    if (!tcp_.isOpen()) stopRealtimeThread();  // the session broke: no stream without it
+    throw;
+  }
+}
+
+RCI::robot::RobotState Connection::waitForState() {
+  Realtime& rt = *rt_;
+  if (!thread_.joinable()) throw UdpException("receiveRobotState: no session with the controller; call connect()");
+  const uint64_t version = rt.latest.version();
+  const uint64_t wrong = rt.wrong_length_count.load(std::memory_order_acquire);
+  const int64_t deadline = net::monotonicNs() + int64_t(options_.timeouts.state_ms) * 1'000'000;
+  RCI::robot::RobotState state;
+  for (;;) {
+    if (rt.latest.version() != version) {
+      rt.latest.load(state);
+      return state;
+    }
+    if (rt.wrong_length_count.load(std::memory_order_acquire) != wrong)
+      throw UdpException("receiveRobotState: the controller sent a state datagram of " +
+                         std::to_string(rt.last_wrong_length.load()) + " bytes instead of " +
+                         std::to_string(protocol::kRobotStateSize) +
+                         ": it speaks another RCI protocol version; use a matching client library");
+    if (net::monotonicNs() > deadline)
+      throw UdpException("receiveRobotState: no state from " + ip_ + " for " +
+                         std::to_string(options_.timeouts.state_ms) + " ms on UDP port " +
+                         std::to_string(udp_port_) + "; check that no firewall blocks UDP and that the "
+                         "controller is in RCI mode");
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+}
+
+bool Connection::latestState(RCI::robot::RobotState& out) const { return rt_->latest.load(out) > rt_->latest_base; }
+
+SessionTiming Connection::timing() const {
+  SessionTiming t;
+  rt_->timing.load(t);
+  return t;
+}
+
+net::RealtimeStatus Connection::realtimeStatus() const {
+  if (!thread_.joinable()) return {};
+  return rt_->status;  // written once before the thread reported `started`
+}
+
+void Connection::beginMotionHold(ControlKind kind) {
+  // Hand-off: two atomics; the thread reads the time after seeing the kind (acquire).
+  rt_->motion_requested_ns.store(net::monotonicNs(), std::memory_order_relaxed);
+  rt_->hold_kind.store(uint32_t(kind) + 1, std::memory_order_release);
+}
+
+void Connection::endMotionHold() { rt_->hold_kind.store(0, std::memory_order_release); }
+
+ControlResult Connection::runControl(const JointControl& callback) { return runControl(ControlKind::kJoint, &callback); }
+ControlResult Connection::runControl(const CartesianControl& callback) {
+  return runControl(ControlKind::kCartesian, &callback);
+}
+ControlResult Connection::runControl(const TorqueControl& callback) { return runControl(ControlKind::kTorque, &callback); }
+
+ControlResult Connection::runControl(ControlKind kind, const void* callback) {
+  Realtime& rt = *rt_;
+  ControlResult result;
+  result.kind = kind;
+  if (!thread_.joinable()) {
+    result.outcome = ControlOutcome::kSessionClosed;
+    return result;
+  }
+  // Hand-off: request fields, then kArmed (release); the thread answers with kDone (see RunState).
+  rt.kind = kind;
+  rt.callback = callback;
+  rt.run_state.store(kRunArmed, std::memory_order_release);
+  endMotionHold();  // the run answers from now on (the thread checks the run first)
+  for (uint32_t s = kRunArmed; s == kRunArmed; s = rt.run_state.load(std::memory_order_acquire))
+    rt.run_state.wait(kRunArmed, std::memory_order_acquire);
+
+  result.outcome = rt.outcome;
+  result.last_state = rt.last_state;
+  result.cycles = rt.cycles;
+  result.exception = rt.exception;
+  result.fault = rt.fault;
+  result.wrong_length = rt.wrong_length;
+  const uint64_t count = std::min<uint64_t>(rt.log_written, kControlLogLength);
+  result.log.reserve(count);
+  for (uint64_t i = rt.log_written - count; i < rt.log_written; ++i) result.log.push_back(rt.log[i % kLogCapacity]);
+  rt.exception = nullptr;
+  rt.callback = nullptr;
+  rt.run_state.store(kRunIdle, std::memory_order_release);
+  return result;
+}
+
+}  // namespace xmate::client

@@ -1,0 +1,193 @@
+// client::Connection: one session with one robot controller (docs/client.md, docs/protocol.md).
+// It owns the TCP command channel (tcp_session.h) and the real-time thread that owns the UDP socket
+// and runs the 1 kHz exchange (docs/architecture.md, "Threads and hand-offs"). xmate::Robot is a
+// thin layer of validation and message encoding on top; RCI Studio's own tools use it directly.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <xmate/exception.h>
+#include <xmate/rci_types.h>
+#include <xmate/types.h>
+
+#include "client/command_checks.h"
+#include "client/state_sample.h"
+#include "client/tcp_session.h"
+#include "net/cycle_stats.h"
+#include "net/realtime.h"
+#include "net/seqlock.h"
+#include "net/spsc_ring.h"
+#include "net/udp_socket.h"
+
+namespace xmate::client {
+
+// Time limits of a session (docs/protocol.md, "Timeouts").
+struct SessionTimeouts {
+  int connect_ms = 2000;          // TCP connect and the Connect handshake
+  int response_ms = 2000;         // any other TCP response
+  int motion_response_ms = 5000;  // StartMove, StopMove, AutomaticErrorRecovery, RebootRobot
+  int state_ms = 1000;            // receiveRobotState(): no state for this long -> UdpException
+  int control_silence_ms = 100;   // during Control(): no state for this long -> UdpException
+};
+
+struct SessionOptions {
+  SessionTimeouts timeouts;
+  bool realtime = true;        // try SCHED_FIFO + mlockall for the real-time thread
+  int realtime_priority = 80;
+  // Where the session reports what it could not get (real-time refused, ...). Default: stderr.
+  std::function<void(const std::string&)> log;
+};
+
+// What the real-time thread counted since the session opened.
+struct SessionCounters {
+  uint64_t states_received = 0;      // well-formed, in-order states (published)
+  uint64_t states_wrong_length = 0;  // datagrams of another size (another protocol version)
+  uint64_t states_bad_value = 0;     // right size but undecodable (impossible bool or enum)
+  uint64_t states_stale = 0;         // message_id not newer than the last one (reordered, duplicated)
+  uint64_t states_foreign = 0;       // datagrams from an address other than the controller's
+  uint64_t states_missed = 0;        // gaps in message_id (states that never arrived)
+  uint64_t commands_sent = 0;
+  uint64_t send_failures = 0;        // sendto refused
+  uint64_t samples_dropped = 0;      // GUI ring full
+};
+
+// Timing of the exchange, refreshed by the real-time thread every 100 ms (timing()).
+struct SessionTiming {
+  net::CycleSummary period;  // between successive received states; lost = message_id gaps
+  net::CycleSummary cost;    // decode + callback + encode + send, cycles that were answered
+  SessionCounters counters;
+};
+
+// How a Control() run ended (runControl()).
+enum class ControlOutcome {
+  kFinished,              // the callback returned motion_finished and the controller ended the motion
+  kControllerError,       // a state carried error bits
+  kEndedByController,     // the controller left the motion without error bits (e.g. a guard stop)
+  kNotStarted,            // the controller never reported the motion as running
+  kFinishNotAcknowledged, // the controller kept moving after motion_generation_finished
+  kCallbackThrew,         // the callback threw (exception holds it)
+  kInvalidCommand,        // the callback returned NaN/Inf or a non-homogeneous pose
+  kStateTimeout,          // no state for control_silence_ms
+  kWrongLength,           // a state datagram of another size arrived
+  kSessionClosed,         // the session was closed during the run
+};
+
+struct ControlResult {
+  ControlOutcome outcome = ControlOutcome::kFinished;
+  ControlKind kind = ControlKind::kJoint;
+  RCI::robot::RobotState last_state;  // the newest state of the run
+  uint64_t cycles = 0;                // commands sent
+  std::exception_ptr exception;       // kCallbackThrew
+  CommandFault fault;                 // kInvalidCommand
+  size_t wrong_length = 0;            // kWrongLength: the datagram's size
+  std::vector<ControlRecord> log;     // the last cycles, oldest first (at most kControlLogLength)
+};
+
+inline constexpr size_t kControlLogLength = 50;
+using SampleRing = net::SpscRing<StateSample, 4096>;
+
+class Connection {
+ public:
+  Connection(const std::string& ip, uint16_t port, XmateType type, SessionOptions options = {});
+  ~Connection();  // close()s
+  Connection(const Connection&) = delete;
+  Connection& operator=(const Connection&) = delete;
+
+  // Opens the TCP session, binds the UDP socket on a free port, starts the real-time thread and
+  // performs the Connect handshake. No-op when open. Throws TcpException (unreachable),
+  // NetworkException (thread, socket) or ProtocolException (incompatible library version).
+  void open();
+  // Stops the real-time thread and closes both sockets. Safe to call twice.
+  void close();
+  bool isOpen() const;
+
+  const std::string& ip() const { return ip_; }
+  uint16_t port() const { return port_; }
+  XmateType type() const { return type_; }
+  const SessionOptions& options() const { return options_; }
+
+  // ---- TCP (any thread; serialised) -----------------------------------------------------------
+  // Sends one request and returns the response payload (starting with its Command code). On a
+  // broken connection the session is closed (open() again, or Robot::reconnect()).
+  template <class Request>
+  std::vector<uint8_t> request(const char* call, const Request& message, int timeout_ms) {
+    return requestFrame(call, [&](uint32_t sequence) { return protocol::encodeFrame(sequence, message); },
+                        commandOf(message), timeout_ms);
+  }
+  std::vector<uint8_t> requestFrame(const char* call, const std::function<protocol::Frame(uint32_t)>& encode,
+                                    protocol::Command command, int timeout_ms);
+
+  // ---- States (any thread) --------------------------------------------------------------------------
+  // Waits for a state newer than the newest one at the time of the call. Throws UdpException on
+  // timeout (options().timeouts.state_ms) or when datagrams of another size arrive.
+  RCI::robot::RobotState waitForState();
+  // Copies the newest state; false if none arrived yet. Never blocks.
+  bool latestState(RCI::robot::RobotState& out) const;
+  // The GUI's ring of compact samples: exactly one consumer thread may pop.
+  SampleRing& samples() { return *samples_; }
+  SessionTiming timing() const;
+  // What the real-time thread got (valid once open() returned).
+  net::RealtimeStatus realtimeStatus() const;
+  // The UDP port the states arrive on (0 when closed).
+  uint16_t udpPort() const { return udp_port_; }
+
+  // ---- Control (one caller at a time) ------------------------------------------------------------
+  // Calls the callback once per received state while the controller reports the motion running,
+  // answers each state with the command, and returns when the run ends (see ControlOutcome).
+  // The callback must stay alive until this returns.
+  // Robot::startMove calls beginMotionHold right before sending StartMove: from then on, until a
+  // Control() run takes over, the real-time thread answers every new state with "hold still" (the
+  // measured position, no extra torque), so the controller loses no command however long the
+  // caller takes to reach Control(). endMotionHold() stops that (refused StartMove, stopMove()).
+  void beginMotionHold(ControlKind kind);
+  void endMotionHold();
+  ControlResult runControl(const JointControl& callback);
+  ControlResult runControl(const CartesianControl& callback);
+  ControlResult runControl(const TorqueControl& callback);
+
+  // ---- Settings remembered for the API's extensions (Robot::toolFrame(), load(), startMove) ------
+  struct Remembered {
+    std::array<double, 16> tool{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    double load_mass = 0;
+    std::array<double, 3> load_center{};
+    std::array<double, 9> load_inertia{};
+    bool move_armed = false;  // startMove() succeeded and no Control()/stopMove() since
+    RCI::robot::StartMoveRequest::ControllerMode controller_mode{};
+    RCI::robot::StartMoveRequest::MotionGeneratorMode motion_mode{};
+  };
+  Remembered& remembered() { return remembered_; }
+  const Remembered& remembered() const { return remembered_; }
+
+  struct Realtime;  // the real-time thread's state (connection_rt.cpp)
+
+ private:
+  template <class M>
+  static protocol::Command commandOf(const M&) { return M::kCommand; }
+  static protocol::Command commandOf(const protocol::EmptyRequest& m) { return m.command; }
+
+  ControlResult runControl(ControlKind kind, const void* callback);
+  void handshake();
+  void startRealtimeThread();
+  void stopRealtimeThread();
+
+  const std::string ip_;
+  const uint16_t port_;
+  const XmateType type_;
+  const SessionOptions options_;
+  TcpSession tcp_;
+  uint16_t udp_port_ = 0;
+  std::unique_ptr<Realtime> rt_;         // allocated once, reused by every session
+  std::unique_ptr<SampleRing> samples_;  // ~2 MB: on the heap, allocated once
+  std::thread thread_;
+  Remembered remembered_;
+};
+
+}  // namespace xmate::client

@@ -1,0 +1,321 @@
+// The `rci-rt` thread of a client::Connection: receive each RobotState, publish it, and during a
+// Control() run call the callback and answer with a RobotCommand. Nothing in the loop allocates,
+// locks or logs (tests/client/test_rt_allocations.cpp counts it).
+#include "client/connection_rt.h"
+
+
+#include "client/error_bits.h"
+#include "net/clock.h"
+
+namespace xmate::client {
+namespace {
+
+using RCI::robot::RobotCommand;
+using RCI::robot::RobotMode;
+using RCI::robot::RobotState;
+
+constexpr int64_t kReceiveWaitUs = 1000;         // one cycle: short enough to notice `stop` and silence
+constexpr int64_t kTimingRefreshNs = 100'000'000;  // SessionTiming is republished every 100 ms
+
+// ---- The end of a run ------------------------------------------------------------------------------
+
+void endRun(Connection::Realtime& rt, ControlOutcome outcome) {
+  rt.outcome = outcome;
+  rt.last_state = rt.state;
+  rt.run_active = false;  // before kDone: the caller may arm the next run right after it
+  rt.run_state.store(kRunDone, std::memory_order_release);
+  rt.run_state.notify_all();
+}
+
+void logCycle(Connection::Realtime& rt, const RobotCommand* answered) {
+  ControlRecord& record = rt.log[rt.log_written % kLogCapacity];
+  record.state = rt.state;
+  record.command = answered ? *answered : RobotCommand{};
+  ++rt.log_written;
+}
+
+// ---- Building the command from the callback's answer ----------------------------------------------
+
+// Calls the callback for rt.state and fills rt.command (keeping the motion fields the mode does
+// not use at harmless values). Returns the fault found in what the callback returned.
+CommandFault callCallback(Connection::Realtime& rt, bool& finished) {
+  const RobotState& s = rt.state;
+  RobotCommand& c = rt.command;
+  c.message_id = s.message_id;
+  switch (rt.kind) {
+    case ControlKind::kJoint: {
+      const JointPositions out = (*static_cast<const JointControl*>(rt.callback))(s);
+      const CommandFault fault = checkCommand(out, rt.dof);
+      c.motion.q_c = out.q;
+      if (rt.dof == 6) c.motion.q_c[6] = 0;  // element 6 is unused on 6-axis models and must be 0
+      c.motion.toolTobase_pos_c = s.toolTobase_pos_c;
+      c.motion.psi_valid = false;
+      c.motion.psi_c = s.psi_c;
+      c.torque.tau_c = {};
+      finished = out.motion_finished;
+      return fault;
+    }
+    case ControlKind::kCartesian: {
+      const CartesianPose out = (*static_cast<const CartesianControl*>(rt.callback))(s);
+      const CommandFault fault = checkCommand(out);
+      c.motion.q_c = s.q_c;
+      c.motion.toolTobase_pos_c = out.toolTobase_pos_c;
+      c.motion.psi_valid = out.psi_valid;
+      c.motion.psi_c = out.psi_valid ? out.psi_c : s.psi_c;
+      c.torque.tau_c = {};
+      finished = out.motion_finished;
+      return fault;
+    }
+    case ControlKind::kTorque: {
+      const Torques out = (*static_cast<const TorqueControl*>(rt.callback))(s);
+      const CommandFault fault = checkCommand(out, rt.dof);
+      c.motion.q_c = s.q;
+      c.motion.toolTobase_pos_c = s.toolTobase_pos_m;
+      c.motion.psi_valid = false;
+      c.motion.psi_c = s.psi_m;
+      c.torque.tau_c = out.tau;
+      if (rt.dof == 6) c.torque.tau_c[6] = 0;
+      finished = out.motion_finished;
+      return fault;
+    }
+  }
+  return {};
+}
+
+void sendCommand(Connection::Realtime& rt, const net::Endpoint& to) {
+  rt.last_answered_id = rt.command.message_id;
+  protocol::encodeRobotCommand(rt.command, rt.encoded);
+  if (rt.udp.sendTo(to, rt.encoded.data(), rt.encoded.size()) == long(rt.encoded.size()))
+    ++rt.counters.commands_sent;
+  else
+    ++rt.counters.send_failures;
+  ++rt.cycles;
+}
+
+// Calls the callback for the newest state and answers it; ends the run if the callback throws or
+// returns something that must not be sent.
+void answerWithCallback(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
+  bool finished = false;
+  try {
+    rt.fault = callCallback(rt, finished);
+  } catch (...) {
+    rt.exception = std::current_exception();
+    logCycle(rt, nullptr);
+    return endRun(rt, ControlOutcome::kCallbackThrew);
+  }
+  if (rt.fault.kind != CommandFault::kNone) {
+    logCycle(rt, &rt.command);
+    return endRun(rt, ControlOutcome::kInvalidCommand);
+  }
+  rt.command.motion.motion_generation_finished = finished;
+  sendCommand(rt, from);
+  rt.cost_stats.record(net::monotonicNs() - received_ns);
+  logCycle(rt, &rt.command);
+  if (finished) {
+    rt.phase = RunPhase::kFinishing;
+    rt.phase_states = 0;
+  }
+}
+
+// After motion_generation_finished: repeat the final command (it may be in flight or lost) until
+// the controller leaves kMove.
+void awaitEnd(Connection::Realtime& rt, bool moving, const net::Endpoint& from, int64_t received_ns) {
+  if (!moving) {
+    logCycle(rt, nullptr);
+    return endRun(rt, ControlOutcome::kFinished);
+  }
+  if (++rt.phase_states >= kFinishWaitStates) {
+    logCycle(rt, nullptr);
+    return endRun(rt, ControlOutcome::kFinishNotAcknowledged);
+  }
+  rt.command.message_id = rt.state.message_id;
+  sendCommand(rt, from);
+  rt.cost_stats.record(net::monotonicNs() - received_ns);
+  logCycle(rt, &rt.command);
+}
+
+// Answers the newest state with "hold still": the measured position (joint and Cartesian) and no
+// extra torque. Sent between StartMove and the start of the Control() run.
+void answerWithHold(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
+  const RobotState& s = rt.state;
+  RobotCommand& c = rt.command;
+  c = RobotCommand{};
+  c.message_id = s.message_id;
+  c.motion.q_c = s.q;
+  if (rt.dof == 6) c.motion.q_c[6] = 0;
+  c.motion.toolTobase_pos_c = s.toolTobase_pos_m;
+  c.motion.psi_c = s.psi_m;
+  sendCommand(rt, from);
+  rt.cost_stats.record(net::monotonicNs() - received_ns);
+}
+
+// Between StartMove and Control(): hold every state that arrived after the request (earlier ones
+// were sent before the controller started the motion and are not expected), unless the motion
+// already ended with an error.
+void holdIfRequested(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
+  if (rt.hold_kind.load(std::memory_order_acquire) == 0) return;
+  if (rt.last_state_ns < rt.motion_requested_ns.load(std::memory_order_relaxed)) return;
+  if (anyError(rt.state.errors)) return;
+  answerWithHold(rt, from, received_ns);
+}
+
+// One cycle of an armed run for the newest state: the callback answers every state until the
+// controller has ended the motion. Until the run started, answerWithHold answered since StartMove;
+// the first state reporting robot_mode kMove marks the motion as running (the first states after
+// StartMove may still report kIdle: they were computed before the request was executed).
+void stepRun(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
+  const RobotState& s = rt.state;
+  if (anyError(s.errors)) {
+    logCycle(rt, nullptr);
+    return endRun(rt, ControlOutcome::kControllerError);
+  }
+  const bool moving = s.robot_mode == RobotMode::kMove;
+  switch (rt.phase) {
+    case RunPhase::kWaitingForStart:
+      if (moving) {
+        rt.phase = RunPhase::kRunning;
+      } else if (++rt.phase_states >= kStartWaitStates) {
+        logCycle(rt, nullptr);
+        return endRun(rt, ControlOutcome::kNotStarted);
+      }
+      return answerWithCallback(rt, from, received_ns);
+    case RunPhase::kRunning:
+      if (!moving) {
+        logCycle(rt, nullptr);
+        return endRun(rt, ControlOutcome::kEndedByController);
+      }
+      return answerWithCallback(rt, from, received_ns);
+    case RunPhase::kFinishing:
+      return awaitEnd(rt, moving, from, received_ns);
+  }
+}
+
+// ---- Receiving -------------------------------------------------------------------------------------
+
+bool sameHost(const net::Endpoint& a, const net::Endpoint& b) {
+  return a.addr.sin_addr.s_addr == b.addr.sin_addr.s_addr;
+}
+
+void handleWrongLength(Connection::Realtime& rt, long size) {
+  ++rt.counters.states_wrong_length;
+  rt.last_wrong_length.store(uint64_t(size), std::memory_order_relaxed);
+  rt.wrong_length_count.fetch_add(1, std::memory_order_release);
+  if (rt.run_active) {
+    rt.wrong_length = size_t(size);
+    endRun(rt, ControlOutcome::kWrongLength);
+  }
+}
+
+// Decodes and publishes one datagram; false if it was dropped.
+bool acceptState(Connection::Realtime& rt, long size, int64_t received_ns) {
+  if (size != long(protocol::kRobotStateSize)) {
+    handleWrongLength(rt, size);
+    return false;
+  }
+  if (protocol::decodeRobotState(rt.datagram.data(), size_t(size), rt.incoming) != protocol::DecodeStatus::kOk) {
+    ++rt.counters.states_bad_value;
+    return false;
+  }
+  if (rt.have_state && rt.incoming.message_id <= rt.last_id) {
+    ++rt.counters.states_stale;
+    return false;
+  }
+  rt.state = rt.incoming;
+  if (rt.have_state) {
+    const uint64_t missed = rt.state.message_id - rt.last_id - 1;
+    if (missed > 0) {
+      rt.counters.states_missed += missed;
+      rt.period_stats.recordLost(missed);
+    }
+    rt.period_stats.record(received_ns - rt.last_state_ns);
+  }
+  rt.have_state = true;
+  rt.last_id = rt.state.message_id;
+  rt.last_state_ns = received_ns;
+  ++rt.counters.states_received;
+  rt.latest.store(rt.state);  // hand-off: seqlock (newest state for receiveRobotState())
+  const double t = double(received_ns - rt.session_start_ns) * 1e-9;
+  if (!rt.samples->push(makeStateSample(rt.state, t)))  // hand-off: SPSC ring to the GUI
+    ++rt.counters.samples_dropped;
+  return true;
+}
+
+void publishTiming(Connection::Realtime& rt, int64_t now_ns) {
+  if (now_ns < rt.next_timing_ns) return;
+  rt.next_timing_ns = now_ns + kTimingRefreshNs;
+  SessionTiming t;
+  t.period = rt.period_stats.summary();
+  t.cost = rt.cost_stats.summary();
+  t.counters = rt.counters;
+  rt.timing.store(t);  // hand-off: seqlock (any reader)
+}
+
+void checkSilence(Connection::Realtime& rt, int64_t now_ns) {
+  if (!rt.run_active) return;
+  const int64_t since = rt.last_state_ns > rt.run_start_ns ? rt.last_state_ns : rt.run_start_ns;
+  if (now_ns - since > rt.silence_limit_ns) endRun(rt, ControlOutcome::kStateTimeout);
+}
+
+}  // namespace
+
+void beginRunIfArmed(Connection::Realtime& rt, int64_t now_ns) {
+  const bool armed = rt.run_state.load(std::memory_order_acquire) == kRunArmed;
+  if (!armed || rt.run_active) {
+    rt.run_active = armed;
+    return;
+  }
+  // A new run: its request fields were written before kArmed was stored.
+  rt.run_active = true;
+  rt.phase = RunPhase::kWaitingForStart;
+  rt.phase_states = 0;
+  rt.run_start_ns = now_ns;
+  rt.log_written = 0;
+  rt.cycles = 0;
+  rt.exception = nullptr;
+  rt.fault = {};
+  rt.wrong_length = 0;
+  rt.command = RobotCommand{};
+  // The newest state may be one the controller waits for and nobody answered yet (no hold was
+  // requested, e.g. a tool driving Connection directly): answer it now if it came after StartMove.
+  const bool unanswered = rt.have_state && rt.state.message_id != rt.last_answered_id &&
+                          rt.last_state_ns >= rt.motion_requested_ns.load(std::memory_order_relaxed);
+  if (unanswered) stepRun(rt, rt.last_from, now_ns);
+}
+
+void processDatagram(Connection::Realtime& rt, long size, const net::Endpoint& from, int64_t received_ns) {
+  if (size > 0 && !sameHost(from, rt.controller)) {
+    ++rt.counters.states_foreign;
+  } else if (size > 0 && acceptState(rt, size, received_ns)) {
+    rt.last_from = from;
+    if (rt.run_active)
+      stepRun(rt, from, received_ns);
+    else
+      holdIfRequested(rt, from, received_ns);
+  } else {
+    checkSilence(rt, received_ns);
+  }
+}
+
+void runRealtimeThread(Connection::Realtime& rt) {
+  net::nameThisThread("rci-rt");
+  if (rt.try_realtime)
+    rt.status = net::enableRealtimeForThisThread(rt.realtime_priority);
+  else
+    rt.status.reason = "real-time scheduling not requested (SessionOptions::realtime = false)";
+  rt.started.store(1, std::memory_order_release);
+  rt.started.notify_all();
+
+  rt.next_timing_ns = net::monotonicNs();
+  while (!rt.stop.load(std::memory_order_acquire)) {
+    net::Endpoint from;
+    const long n = rt.udp.receiveFrom(rt.datagram.data(), rt.datagram.size(), &from, kReceiveWaitUs);
+    const int64_t now = net::monotonicNs();
+    beginRunIfArmed(rt, now);
+    processDatagram(rt, n, from, now);
+    publishTiming(rt, now);
+  }
+  beginRunIfArmed(rt, net::monotonicNs());
+  if (rt.run_active) endRun(rt, ControlOutcome::kSessionClosed);
+}
+
+}  // namespace xmate::client

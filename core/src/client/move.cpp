@@ -1,0 +1,194 @@
+// MOVEJ, MOVEL and MOVEC (API.md, "Moves"): plan with the jerk-limited planners of core/src/planning,
+// check the plan (move_check.h), then stream it through Robot::Control. MOVEJ runs in joint position
+// mode; MOVEL/MOVEC run in Cartesian position mode, or with an XmateModel in joint position mode with
+// IK every cycle. Time in the callbacks comes from the controller's message_id, so a lost state
+// does not shift the plan against the controller's clock.
+#include <xmate/move.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include <xmate/joint_motion.h>
+
+#include "client/move_check.h"
+#include "model/robot_spec.h"
+#include "planning/cartesian_path.h"
+#include "planning/cartesian_pose.h"
+#include "planning/cartesian_trajectory.h"
+
+namespace xmate {
+namespace {
+
+using CM = RCI::robot::StartMoveRequest::ControllerMode;
+using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
+using RCI::robot::RobotState;
+
+constexpr double kDt = 1e-3;
+
+// Seconds since the motion started, counted by the controller's message_id. The first two commands
+// are the plan's start itself (t = 0), so the plan's first step always follows a command at rest --
+// also when the controller measures the motion from the second answer (the first state after
+// StartMove can be one it sent before executing the request; see Connection::runControl).
+struct MotionClock {
+  bool started = false;
+  uint64_t origin = 0;  // message_id of the second state of the motion
+  double at(const RobotState& s) {
+    if (!started) {
+      started = true;
+      origin = s.message_id + 1;
+    }
+    return s.message_id <= origin ? 0.0 : double(s.message_id - origin) * kDt;
+  }
+};
+
+void requireFinite(const char* call, const char* what, const std::array<double, 7>& q, int dof) {
+  for (int i = 0; i < dof; ++i)
+    if (!std::isfinite(q[i]))
+      throw std::invalid_argument(std::string(call) + ": " + what + "[" + std::to_string(i) + "] is not a finite number");
+}
+
+void requireWithinJointRange(const char* call, const std::array<double, 7>& q, const model::RobotSpec& spec) {
+  for (int i = 0; i < spec.dof; ++i)
+    if (q[i] < spec.q_min[i] || q[i] > spec.q_max[i])
+      throw MotionException(std::string(call) + ": q_target[" + std::to_string(i) + "] = " + std::to_string(q[i]) +
+                            " rad is outside the joint range [" + std::to_string(spec.q_min[i]) + ", " +
+                            std::to_string(spec.q_max[i]) + "] of the " + std::string(spec.display_name) +
+                            "; choose a reachable target");
+}
+
+// A kinematic model with the robot's tool: the caller's (copied, so its settings stay untouched) or
+// an offline one. Joint speeds are checked over the whole path, not by IK per step.
+XmateModel pathModel(Robot& robot, const XmateModel* user_model) {
+  XmateModel model = user_model ? *user_model : XmateModel(robot.type());
+  if (!user_model) model.SetCoor(robot.toolFrame());
+  model.SetSpeedCheckInterval(0);
+  return model;
+}
+
+// The model's TCP must be the robot's: else IK would drive the wrong point along the path.
+void requireModelMatchesRobot(const char* call, XmateModel& model, const RobotState& state) {
+  const std::array<double, 16> fk = model.GetCartPose(state.q);
+  const double dx = fk[3] - state.toolTobase_pos_m[3], dy = fk[7] - state.toolTobase_pos_m[7],
+               dz = fk[11] - state.toolTobase_pos_m[11];
+  const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+  if (d > client::kStartPositionTolerance)
+    throw MotionException(std::string(call) + ": the model puts the TCP " + std::to_string(d * 1000) +
+                          " mm from where the robot reports it; give the model the robot's tool: "
+                          "model.SetCoor(robot.toolFrame())");
+}
+
+// The path from where the robot is (its held command) to target, through via for an arc.
+planning::CartesianPath makePath(const std::array<double, 16>& start_pose, double start_psi, const cart_pos* via,
+                                 const cart_pos& target) {
+  const planning::PathPoint start = planning::pathPoint(start_pose, start_psi, "the robot's TCP pose");
+  const double target_psi = target.psi_valid ? target.psi : start_psi;
+  const planning::PathPoint end = planning::pathPoint(target.pos, target_psi, "target");
+  if (!via) return planning::makeLinePath(start, end);
+  return planning::makeArcPath(start, planning::pathPoint(via->pos, start_psi, "mid"), end);
+}
+
+bool moveCartesian(const char* call, double speed_ratio, cart_pos& start, const cart_pos* via, cart_pos& target,
+                   Robot& robot, XmateModel* user_model) {
+  client::requireSpeedRatio(call, speed_ratio);
+  const model::RobotSpec& spec = model::robotSpec(robot.type());
+  const RobotState state = robot.receiveRobotState();
+  XmateModel model = pathModel(robot, user_model);
+  if (user_model) requireModelMatchesRobot(call, model, state);
+  client::requireStartPose(call, start.pos, state.toolTobase_pos_m);
+
+  // Start exactly where the robot is (the controller measures the first command against it).
+  const std::array<double, 7> q0 = state.q;
+  const double psi0 = spec.dof == 7 ? model.GetPsi(q0) : 0.0;
+  if (spec.dof == 7 && start.psi_valid && std::abs(std::remainder(start.psi - psi0, 2 * std::numbers::pi)) > client::kStartJointTolerance)
+    throw MotionException(std::string(call) + ": start.psi = " + std::to_string(start.psi) +
+                          " rad differs from the robot's arm angle " + std::to_string(psi0) +
+                          " rad; pass the current state (or psi_valid = false)");
+  const std::array<double, 16> pose0 = model.GetCartPose(q0);
+  const planning::CartesianPath path = makePath(pose0, psi0, via, target);
+  const planning::CartesianTrajectory trajectory = client::planWithinJointLimits(call, path, speed_ratio, model, q0);
+  if (planning::duration(trajectory) <= 0) return true;
+
+  MotionClock clock;
+  if (user_model) {
+    // Joint position mode, IK every cycle from the previous command.
+    std::array<double, 7> q_prev = q0;
+    robot.startMove(CM::kJointPosition, MM::kJointPosition);
+    robot.Control(JointControl([&](RobotState s) -> JointPositions {
+      const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, clock.at(s));
+      JointPositions out;
+      const int rc = model.GetJointPos(planning::poseToRowMajor(sample.pose), sample.psi, q_prev, out.q);
+      if (rc != XmateModel::kIkOk)
+        throw MotionException(std::string(call) + ": IK failed during the motion: " + client::ikFailureText(rc) +
+                              " (IK code " + std::to_string(rc) + "); the motion was stopped");
+      q_prev = out.q;
+      out.motion_finished = sample.finished;
+      return out;
+    }));
+  } else {
+    // Cartesian position mode: the controller solves IK; we send the pose and the arm angle.
+    robot.startMove(CM::kCartesianPosition, MM::kCartesianPosition);
+    robot.Control(CartesianControl([&](RobotState s) -> CartesianPose {
+      const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, clock.at(s));
+      CartesianPose out;
+      out.toolTobase_pos_c = planning::poseToRowMajor(sample.pose);
+      out.psi_valid = spec.dof == 7;
+      out.psi_c = sample.psi;
+      out.motion_finished = sample.finished;
+      return out;
+    }));
+  }
+  return true;
+}
+
+}  // namespace
+
+bool MOVEJ(double speed_ratio, const std::array<double, 7>& q_start, const std::array<double, 7>& q_target,
+           Robot& robot) {
+  const char* call = "MOVEJ";
+  client::requireSpeedRatio(call, speed_ratio);
+  const model::RobotSpec& spec = model::robotSpec(robot.type());
+  requireFinite(call, "q_target", q_target, spec.dof);
+  requireWithinJointRange(call, q_target, spec);
+  const RobotState state = robot.receiveRobotState();
+  client::requireStartJoints(call, q_start, state.q, spec.dof);
+
+  std::array<double, 7> q0 = state.q;
+  JointMotionGenerator generator(speed_ratio, q_target, robot.type());
+  generator.calculateSynchronizedValues_joint(q0);
+  if (generator.GetTime() <= 0) return true;
+
+  MotionClock clock;
+  robot.startMove(CM::kJointPosition, MM::kJointPosition);
+  robot.Control(JointControl([&](RobotState s) -> JointPositions {
+    if (!clock.started) {
+      q0 = s.q;  // where the motion really starts; re-plans only if the robot moved meanwhile
+      generator.calculateSynchronizedValues_joint(q0);
+    }
+    std::array<double, 7> delta{};
+    JointPositions out;
+    const bool finished = generator.calculateDesiredValues_joint(clock.at(s), delta);
+    for (int i = 0; i < spec.dof; ++i) out.q[i] = finished ? q_target[i] : q0[i] + delta[i];
+    out.motion_finished = finished;
+    return out;
+  }));
+  return true;
+}
+
+bool MOVEL(double speed_ratio, cart_pos& start, cart_pos& target, Robot& robot) {
+  return moveCartesian("MOVEL", speed_ratio, start, nullptr, target, robot, nullptr);
+}
+
+bool MOVEL(double speed_ratio, cart_pos& start, cart_pos& target, Robot& robot, XmateModel& model) {
+  return moveCartesian("MOVEL", speed_ratio, start, nullptr, target, robot, &model);
+}
+
+bool MOVEC(double speed_ratio, cart_pos& start, cart_pos& mid, cart_pos& target, Robot& robot) {
+  return moveCartesian("MOVEC", speed_ratio, start, &mid, target, robot, nullptr);
+}
+
+bool MOVEC(double speed_ratio, cart_pos& start, cart_pos& mid, cart_pos& target, Robot& robot, XmateModel& model) {
+  return moveCartesian("MOVEC", speed_ratio, start, &mid, target, robot, &model);
+}
+
+}  // namespace xmate

@@ -1,0 +1,63 @@
+// What MOVEJ/MOVEL/MOVEC check before they move: that the caller's start matches where the robot
+// is, and that a Cartesian path can be followed in joint space (every 1 ms sample reachable by IK,
+// joint speeds, accelerations and jerks within the limits) -- slowing the whole move down when it
+// is only too fast. Failures throw xmate::MotionException saying where and what to do.
+#pragma once
+
+#include <array>
+
+#include <xmate/model.h>
+#include <xmate/rci_types.h>
+
+#include "model/robot_spec.h"
+#include "planning/cartesian_trajectory.h"
+
+namespace xmate::client {
+
+// How far the caller's start may be from the robot's actual position.
+inline constexpr double kStartJointTolerance = 1e-3;      // rad
+inline constexpr double kStartPositionTolerance = 1e-3;   // m
+inline constexpr double kStartRotationTolerance = 1e-3;   // rad
+
+// Throws std::invalid_argument unless speed_ratio is in (0, 1].
+void requireSpeedRatio(const char* call, double speed_ratio);
+
+// Throws MotionException when q_start differs from q_actual by more than kStartJointTolerance.
+void requireStartJoints(const char* call, const std::array<double, 7>& q_start, const std::array<double, 7>& q_actual,
+                        int dof);
+// Throws MotionException when the start pose is more than 1 mm / 1e-3 rad from the actual one.
+void requireStartPose(const char* call, const std::array<double, 16>& start, const std::array<double, 16>& actual);
+
+// The worst ratios of a sampled joint trajectory to the limits (> 1: too fast), and where the
+// largest of them occurs.
+struct JointSweep {
+  double velocity_ratio = 0;      // max |dq| / (dq_max * speed_ratio)
+  double acceleration_ratio = 0;  // max |ddq| / ddq_max
+  double jerk_ratio = 0;          // max |dddq| / jerk_max
+  double worst() const;           // the largest of the three
+  double worst_time = 0;          // s since the start of the move
+  int worst_joint = 0;            // 0-based
+  std::array<double, 3> worst_tcp{};  // TCP position there, m
+};
+
+// A move is re-timed at most this much slower than asked before it counts as passing too close to
+// a singular pose.
+inline constexpr double kMaxSlowdown = 20.0;
+
+// Samples `trajectory` every 1 ms from q_start with IK (q_init = the previous sample) and measures
+// the joint rates by finite differences. Throws MotionException at the first sample IK cannot
+// reach (naming the fraction of the path, the time, the TCP position and the IK reason).
+JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory, XmateModel& model,
+                           const std::array<double, 7>& q_start, double speed_ratio);
+
+// Times `path` at speed_ratio and, while the joint rates would exceed their limits, re-times it
+// slower (at most kMaxSlowdown times). Throws MotionException when it is unreachable, or when it
+// would need a slower timing than that (it passes too close to a singular pose), saying where.
+planning::CartesianTrajectory planWithinJointLimits(const char* call, const planning::CartesianPath& path,
+                                                    double speed_ratio, XmateModel& model,
+                                                    const std::array<double, 7>& q_start);
+
+// "beyond the arm's reach", ... for an XmateModel::IkResult.
+const char* ikFailureText(int code);
+
+}  // namespace xmate::client

@@ -1,0 +1,252 @@
+// xmate::Robot: session calls and the TCP settings of API.md. Each call validates its arguments with
+// model/parameter_checks.h (std::invalid_argument, nothing sent), connects if needed, sends the
+// request and turns the response into a return value or an exception (robot_responses.h).
+// Motion calls (startMove, stopMove, Control) are in robot_control.cpp.
+#include <xmate/robot.h>
+
+#include <stdexcept>
+
+#include "client/connection.h"
+#include "client/robot_responses.h"
+#include "model/parameter_checks.h"
+#include "model/robot_spec.h"
+
+namespace xmate {
+namespace {
+
+namespace proto = protocol;
+using client::requireSetterSuccess;
+
+void require(const std::string& problem) {
+  if (!problem.empty()) throw std::invalid_argument(problem);
+}
+
+const model::RobotSpec& specOf(const client::Connection& c) { return model::robotSpec(c.type()); }
+
+int responseMs(const client::Connection& c) { return c.options().timeouts.response_ms; }
+int motionResponseMs(const client::Connection& c) { return c.options().timeouts.motion_response_ms; }
+
+}  // namespace
+
+Robot::Robot(const std::string& ip, uint16_t port, XmateType type)
+    : connection_(std::make_unique<client::Connection>(ip, port, type)) {}
+
+Robot::~Robot() = default;
+
+void Robot::connect() { connection_->open(); }
+
+bool Robot::reconnect() {
+  connection_->close();
+  try {
+    connection_->open();
+    return true;
+  } catch (const XmateException&) {
+    return false;  // connect() gives the reason
+  }
+}
+
+RCI::robot::RobotState Robot::receiveRobotState() {
+  connect();
+  return connection_->waitForState();
+}
+
+// ---- Settings -----------------------------------------------------------------------------------------
+
+void Robot::setCollisionBehavior(const std::array<double, 7>& thresholds) {
+  require(model::checkCollisionThresholds(specOf(*connection_), thresholds));
+  connect();
+  proto::SetCollisionBehaviorRequest m;
+  m.thresholds = thresholds;
+  requireSetterSuccess("setCollisionBehavior", connection_->request("setCollisionBehavior", m, responseMs(*connection_)));
+}
+
+void Robot::setCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame, bool active) {
+  require(model::checkCartesianLimit(size, frame));
+  connect();
+  proto::SetCartesianLimitRequest m;
+  m.size = size;
+  m.frame = frame;
+  m.active = active;
+  requireSetterSuccess("setCartesianLimit", connection_->request("setCartesianLimit", m, responseMs(*connection_)));
+}
+
+void Robot::setJointImpedance(const std::array<double, 7>& K_theta) {
+  require(model::checkJointImpedance(specOf(*connection_), K_theta));
+  connect();
+  proto::SetJointImpedanceRequest m;
+  m.stiffness = K_theta;
+  requireSetterSuccess("setJointImpedance", connection_->request("setJointImpedance", m, responseMs(*connection_)));
+}
+
+void Robot::setCartesianImpedance(const std::array<double, 6>& K_x) {
+  require(model::checkCartesianImpedance(K_x));
+  connect();
+  proto::SetCartesianImpedanceRequest m;
+  m.stiffness = K_x;
+  requireSetterSuccess("setCartesianImpedance",
+                       connection_->request("setCartesianImpedance", m, responseMs(*connection_)));
+}
+
+void Robot::setCoor(const std::array<double, 16>& F_T_EE) {
+  require(model::checkToolFrame(F_T_EE));
+  connect();
+  proto::SetCoorRequest m;
+  m.flange_to_tool = F_T_EE;
+  requireSetterSuccess("setCoor", connection_->request("setCoor", m, responseMs(*connection_)),
+                       " (the tool cannot change during a motion)");
+  connection_->remembered().tool = F_T_EE;
+}
+
+void Robot::setLoad(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia) {
+  require(model::checkLoad(specOf(*connection_), mass, center, inertia));
+  connect();
+  proto::SetLoadRequest m;
+  m.mass = mass;
+  m.center = center;
+  m.inertia = inertia;
+  requireSetterSuccess("setLoad", connection_->request("setLoad", m, responseMs(*connection_)),
+                       " (the load cannot change during a motion)");
+  auto& r = connection_->remembered();
+  r.load_mass = mass;
+  r.load_center = center;
+  r.load_inertia = inertia;
+}
+
+void Robot::setFilters(double joint_hz, double cartesian_hz, double torque_hz) {
+  require(model::checkFilters(joint_hz, cartesian_hz, torque_hz));
+  connect();
+  proto::SetFiltersRequest m;
+  m.joint_hz = joint_hz;
+  m.cartesian_hz = cartesian_hz;
+  m.torque_hz = torque_hz;
+  requireSetterSuccess("setFilters", connection_->request("setFilters", m, responseMs(*connection_)));
+}
+
+void Robot::setCartImpDesiredTau(const std::array<double, 6>& tau) {
+  require(model::checkDesiredWrench(tau));
+  connect();
+  proto::SetCartImpDesiredTauRequest m;
+  m.tau = tau;
+  requireSetterSuccess("setCartImpDesiredTau", connection_->request("setCartImpDesiredTau", m, responseMs(*connection_)));
+}
+
+bool Robot::setMotorPower(int state) {
+  require(model::checkMotorPower(state));
+  connect();
+  proto::SetMotorPowerRequest m;
+  m.state = uint8_t(state);
+  requireSetterSuccess("setMotorPower", connection_->request("setMotorPower", m, motionResponseMs(*connection_)),
+                       state == 1 ? " (release an emergency stop first)" : "");
+  return true;
+}
+
+int Robot::getMotorState() {
+  connect();
+  const uint8_t value = client::byteValue(
+      "getMotorState", connection_->request("getMotorState", proto::EmptyRequest{proto::Command::kGetMotorState},
+                                            responseMs(*connection_)));
+  if (value > 1)
+    throw ProtocolException("getMotorState: the controller answered " + std::to_string(value) + ", not 0 or 1");
+  return value;
+}
+
+bool Robot::setDO(RCI::robot::DOSIGNAL signal, bool state) {
+  if (uint8_t(signal) > uint8_t(RCI::robot::DOSIGNAL::DO1_1))
+    throw std::invalid_argument("setDO: signal = " + std::to_string(int(signal)) + " is not one of DO0_0..DO1_1");
+  connect();
+  proto::SetDORequest m;
+  m.signal = uint8_t(signal);
+  m.state = state;
+  requireSetterSuccess("setDO", connection_->request("setDO", m, responseMs(*connection_)));
+  return true;
+}
+
+bool Robot::getDI(RCI::robot::DISIGNAL signal) {
+  if (uint8_t(signal) > uint8_t(RCI::robot::DISIGNAL::DI1_1))
+    throw std::invalid_argument("getDI: signal = " + std::to_string(int(signal)) + " is not one of DI0_0..DI1_1");
+  connect();
+  proto::GetDIStateRequest m;
+  m.signal = uint8_t(signal);
+  return client::digitalInputLevel(connection_->request("getDI", m, responseMs(*connection_)));
+}
+
+void Robot::setJointLimit(const std::array<double, 7>& upper_deg, const std::array<double, 7>& lower_deg,
+                          bool auto_limit) {
+  require(model::checkSoftLimits(specOf(*connection_), upper_deg, lower_deg));
+  connect();
+  proto::SetJointLimitRequest m;
+  m.upper = upper_deg;
+  m.lower = lower_deg;
+  m.auto_limit = auto_limit;
+  requireSetterSuccess("setJointLimit", connection_->request("setJointLimit", m, responseMs(*connection_)));
+}
+
+void Robot::setFcCoor(const std::array<double, 16>& frame, int fc_type) {
+  require(model::checkForceFrame(frame, fc_type));
+  connect();
+  proto::SetFcCoorRequest m;
+  m.frame = frame;
+  m.type = uint8_t(fc_type - 1);  // API 1 world, 2 tool, 3 path -> wire 0..2
+  requireSetterSuccess("setFcCoor", connection_->request("setFcCoor", m, responseMs(*connection_)));
+}
+
+void Robot::startDrag(int drag_space, int drag_type) {
+  require(model::checkDrag(drag_space, drag_type));
+  connect();
+  proto::StartDragRequest m;
+  m.space = uint8_t(drag_space - 1);  // API 1 joint, 2 Cartesian -> wire 0, 1
+  m.type = uint8_t(drag_type - 1);    // API 1 translation, 2 rotation, 3 free -> wire 0..2
+  requireSetterSuccess("startDrag", connection_->request("startDrag", m, motionResponseMs(*connection_)),
+                       "; drag needs the motors on and no motion running");
+}
+
+void Robot::stopDrag() {
+  connect();
+  requireSetterSuccess("stopDrag", connection_->request("stopDrag", proto::EmptyRequest{proto::Command::kStopDrag},
+                                                        motionResponseMs(*connection_)));
+}
+
+void Robot::automaticErrorRecovery() {
+  connect();
+  client::requireRecoverySuccess(connection_->request(
+      "automaticErrorRecovery", proto::EmptyRequest{proto::Command::kAutomaticErrorRecovery},
+      motionResponseMs(*connection_)));
+}
+
+void Robot::rebootRobot() {
+  connect();
+  requireSetterSuccess("rebootRobot", connection_->request("rebootRobot", proto::EmptyRequest{proto::Command::kRebootRobot},
+                                                           motionResponseMs(*connection_)));
+  // The controller drops the session and comes back with its defaults: so do we.
+  connection_->close();
+  connection_->remembered() = client::Connection::Remembered{};
+}
+
+int Robot::getSafetyStopState() {
+  connect();
+  const uint8_t value = client::byteValue(
+      "getSafetyStopState", connection_->request("getSafetyStopState",
+                                                 proto::EmptyRequest{proto::Command::kGetSafetyStopState},
+                                                 responseMs(*connection_)));
+  if (value > 2)
+    throw ProtocolException("getSafetyStopState: the controller answered " + std::to_string(value) +
+                            ", not 0 (none), 1 (ESTOP) or 2 (GSTOP)");
+  return value + 1;  // wire 0 none, 1 ESTOP, 2 GSTOP -> API 1, 2, 3
+}
+
+// ---- Extensions ------------------------------------------------------------------------------------------
+
+XmateType Robot::type() const { return connection_->type(); }
+
+std::array<double, 16> Robot::toolFrame() const { return connection_->remembered().tool; }
+
+void Robot::load(double& mass, std::array<double, 3>& center, std::array<double, 9>& inertia) const {
+  const auto& r = connection_->remembered();
+  mass = r.load_mass;
+  center = r.load_center;
+  inertia = r.load_inertia;
+}
+
+client::Connection& Robot::connection() { return *connection_; }
+
+}  // namespace xmate

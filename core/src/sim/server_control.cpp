@@ -1,0 +1,325 @@
+// The control-port line protocol (server_control.h): parsing, the commands, and the TCP thread that
+// serves them.
+#include "sim/server_control.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "net/realtime.h"
+#include "sim/server_faults.h"
+
+namespace xmate::sim {
+namespace {
+
+constexpr size_t kMaxLineLength = 1024;
+constexpr int kPollMs = 100;
+
+using Words = std::vector<std::string_view>;
+
+Words splitWords(std::string_view line) {
+  Words words;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    const size_t start = i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    if (i > start) words.push_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
+// A command's mistake: the message says what was wrong; the usage is added by the dispatcher.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+double parseNumber(std::string_view word, const char* what) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (ec != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
+    throw UsageError(std::string(what) + " must be a finite number, got '" + std::string(word) + "'");
+  return value;
+}
+
+int parseInteger(std::string_view word, const char* what, int min, int max) {
+  int value = 0;
+  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (ec != std::errc() || end != word.data() + word.size() || value < min || value > max)
+    throw UsageError(std::string(what) + " must be a whole number from " + std::to_string(min) + " to " +
+                     std::to_string(max) + ", got '" + std::string(word) + "'");
+  return value;
+}
+
+bool parseOnOff(std::string_view word) {
+  if (word == "on" || word == "1") return true;
+  if (word == "off" || word == "0") return false;
+  throw UsageError("expected on or off, got '" + std::string(word) + "'");
+}
+
+void expectWords(const Words& w, size_t count) {
+  if (w.size() != count)
+    throw UsageError("expected " + std::to_string(count - 1) + " argument" + (count == 2 ? "" : "s") + ", got " +
+                     std::to_string(w.size() - 1));
+}
+
+std::string bits(const std::array<bool, 6>& b) {
+  std::string s;
+  for (bool v : b) s += v ? '1' : '0';
+  return s;
+}
+
+const char* safetyStopName(int api_value) {
+  switch (api_value) {
+    case 2: return "estop";
+    case 3: return "gstop";
+    default: return "none";
+  }
+}
+
+// ---- The commands ------------------------------------------------------------------------------------
+
+struct ControlCommand {
+  const char* name;
+  const char* usage;
+  std::function<std::string(Server&, const Words&)> run;  // returns the text after "ok"
+};
+
+std::string runWrench(Server& server, const Words& w) {
+  expectWords(w, 7);
+  std::array<double, 6> wrench{};
+  const char* names[6] = {"fx", "fy", "fz", "tx", "ty", "tz"};
+  for (size_t i = 0; i < 6; ++i) wrench[i] = parseNumber(w[i + 1], names[i]);
+  server.setExternalWrench(wrench);
+  char text[200];
+  std::snprintf(text, sizeof text, "wrench %g %g %g N, %g %g %g Nm (base frame, at the TCP)", wrench[0], wrench[1],
+                wrench[2], wrench[3], wrench[4], wrench[5]);
+  return text;
+}
+
+std::string runSwitch(const Words& w, const std::function<void(bool)>& apply, const char* name) {
+  expectWords(w, 2);
+  const bool on = parseOnOff(w[1]);
+  apply(on);
+  return std::string(name) + (on ? " on" : " off");
+}
+
+std::string runDigitalInput(Server& server, const Words& w) {
+  expectWords(w, 3);
+  const int index = parseInteger(w[1], "the input index", 0, 5);
+  const bool level = parseInteger(w[2], "the level", 0, 1) == 1;
+  server.setDigitalInput(index, level);
+  return "di " + std::to_string(index) + " = " + (level ? "1" : "0");
+}
+
+// "drop states N" / "drop commands N"
+std::string runDrop(Server& server, const Words& w) {
+  expectWords(w, 3);
+  const int n = parseInteger(w[2], "N", 1, kMaxFaultCount);
+  if (w[1] == "states") {
+    server.dropStates(n);
+    return "dropping the next " + std::to_string(n) + " states";
+  }
+  if (w[1] == "commands") {
+    server.dropCommands(n);
+    return "dropping the next " + std::to_string(n) + " commands";
+  }
+  throw UsageError("expected 'states' or 'commands', got '" + std::string(w[1]) + "'");
+}
+
+std::string runDelay(Server& server, const Words& w) {
+  expectWords(w, 4);
+  if (w[1] != "commands") throw UsageError("only commands can be delayed, got '" + std::string(w[1]) + "'");
+  const int n = parseInteger(w[2], "N", 1, kMaxFaultCount);
+  const int ms = parseInteger(w[3], "MS", 0, kMaxFaultDelayMs);
+  server.delayCommands(n, ms);
+  return "delaying the next " + std::to_string(n) + " commands by " + std::to_string(ms) + " ms";
+}
+
+// "reorder states N", "corrupt states N", "badlength states N"
+std::string runStateFault(const Words& w, const std::function<void(int)>& apply, const char* verb) {
+  expectWords(w, 3);
+  if (w[1] != "states") throw UsageError("this fault applies to states only, got '" + std::string(w[1]) + "'");
+  const int n = parseInteger(w[2], "N", 1, kMaxFaultCount);
+  apply(n);
+  return std::string(verb) + " the next " + std::to_string(n) + " states";
+}
+
+// "payload KG [CX CY CZ]" (a point mass) or "payload follow"
+std::string runPayload(Server& server, const Words& w) {
+  if (w.size() == 2 && w[1] == "follow") {
+    server.followConfiguredLoad();
+    return "payload follows the configured load (setLoad)";
+  }
+  if (w.size() != 2 && w.size() != 5) throw UsageError("expected 1 or 4 arguments, got " + std::to_string(w.size() - 1));
+  const double mass = parseNumber(w[1], "KG");
+  std::array<double, 3> center{};
+  const char* names[3] = {"CX", "CY", "CZ"};
+  for (size_t i = 0; i + 2 < w.size(); ++i) center[i] = parseNumber(w[i + 2], names[i]);
+  server.setActualPayload(mass, center, {});
+  char text[160];
+  std::snprintf(text, sizeof text, "payload %g kg at %g %g %g m (flange frame, point mass)", mass, center[0],
+                center[1], center[2]);
+  return text;
+}
+
+std::string runStatus(Server& server, const Words& w) {
+  expectWords(w, 1);
+  return formatStatus(server.status());
+}
+
+std::string runKill(Server& server, const Words& w) {
+  expectWords(w, 1);
+  server.kill();
+  return "killed: no state stream, TCP closed, connections refused until 'restart'";
+}
+
+std::string runRestart(Server& server, const Words& w) {
+  expectWords(w, 1);
+  server.stop();
+  server.start();
+  return "restarted: a fresh controller listens on port " + std::to_string(server.port());
+}
+
+std::string runHelp(Server&, const Words& w) {
+  expectWords(w, 1);
+  return controlHelp();
+}
+
+const std::vector<ControlCommand>& commands() {
+  static const std::vector<ControlCommand> list = {
+      {"wrench", "wrench FX FY FZ TX TY TZ (N, Nm; base frame, at the TCP)", runWrench},
+      {"estop", "estop on|off",
+       [](Server& s, const Words& w) { return runSwitch(w, [&](bool on) { s.setEmergencyStop(on); }, "estop"); }},
+      {"gstop", "gstop on|off",
+       [](Server& s, const Words& w) { return runSwitch(w, [&](bool on) { s.setGuardStop(on); }, "gstop"); }},
+      {"di", "di INDEX(0-5) LEVEL(0|1)", runDigitalInput},
+      {"loopback", "loopback on|off (DO k drives DI k)",
+       [](Server& s, const Words& w) { return runSwitch(w, [&](bool on) { s.setDoToDiLoopback(on); }, "loopback"); }},
+      {"payload", "payload KG [CX CY CZ] (what really hangs on the flange) | payload follow", runPayload},
+      {"drop", "drop states N | drop commands N", runDrop},
+      {"delay", "delay commands N MS", runDelay},
+      {"reorder", "reorder states N (pairs are swapped)",
+       [](Server& s, const Words& w) { return runStateFault(w, [&](int n) { s.reorderStates(n); }, "reordering"); }},
+      {"corrupt", "corrupt states N",
+       [](Server& s, const Words& w) { return runStateFault(w, [&](int n) { s.corruptStates(n); }, "corrupting"); }},
+      {"badlength", "badlength states N",
+       [](Server& s, const Words& w) {
+         return runStateFault(w, [&](int n) { s.sendWrongLengthStates(n); }, "shortening");
+       }},
+      {"status", "status", runStatus},
+      {"kill", "kill", runKill},
+      {"restart", "restart (power-cycles the controller after a kill)", runRestart},
+      {"help", "help", runHelp},
+  };
+  return list;
+}
+
+}  // namespace
+
+std::string controlHelp() {
+  std::string text = "commands:";
+  for (const ControlCommand& c : commands()) text += std::string(" | ") + c.usage;
+  return text + " | quit";
+}
+
+std::string executeControlLine(Server& server, std::string_view line) {
+  const Words words = splitWords(line);
+  if (words.empty()) return "error empty line; type help";
+  for (const ControlCommand& c : commands()) {
+    if (words[0] != c.name) continue;
+    try {
+      return "ok " + c.run(server, words);
+    } catch (const UsageError& e) {
+      return std::string("error ") + c.name + ": " + e.what() + "; usage: " + c.usage;
+    } catch (const std::exception& e) {
+      return std::string("error ") + c.name + ": " + e.what();
+    }
+  }
+  return "error unknown command '" + std::string(words[0]) + "'; type help for the list";
+}
+
+std::string formatStatus(const ServerStatus& st) {
+  std::ostringstream o;
+  const ServerCounters& c = st.counters;
+  const PendingFaults& p = st.pending;
+  o << "running=" << st.running << " killed=" << st.killed << " rebooting=" << st.rebooting
+    << " session=" << st.session << " streaming=" << st.streaming << " port=" << st.port
+    << " client=" << (st.client.empty() ? "-" : st.client)
+    << " clock=" << (st.clock == ClockMode::kLockStep ? "lockstep" : "realtime") << " message_id=" << st.message_id
+    << " motors=" << (st.sim.motors_on ? "on" : "off") << " safety_stop=" << safetyStopName(st.sim.safety_stop)
+    << " dragging=" << st.sim.dragging << " motion=" << st.sim.motion_active << " do=" << bits(st.sim.digital_out)
+    << " di=" << bits(st.sim.digital_in) << " payload=" << st.sim.actual_payload_mass
+    << " payload_follows_load=" << st.sim.actual_payload_follows_load << " wrench=";
+  for (size_t i = 0; i < 6; ++i) o << (i ? "," : "") << st.sim.external_wrench[i];
+  o << " cycles=" << c.cycles << " states_sent=" << c.states_sent << " states_dropped=" << c.states_dropped
+    << " states_reordered=" << c.states_reordered << " states_corrupted=" << c.states_corrupted
+    << " states_wrong_length=" << c.states_wrong_length << " commands_received=" << c.commands_received
+    << " commands_used=" << c.commands_used << " commands_stale=" << c.commands_stale
+    << " commands_malformed=" << c.commands_malformed << " commands_lost=" << c.commands_lost
+    << " commands_dropped=" << c.commands_dropped << " commands_delayed=" << c.commands_delayed
+    << " sessions=" << c.sessions << " reboots=" << c.reboots << " pending_drop_states=" << p.drop_states
+    << " pending_drop_commands=" << p.drop_commands << " pending_delay_commands=" << p.delay_commands
+    << " pending_reorder_states=" << p.reorder_states << " pending_corrupt_states=" << p.corrupt_states
+    << " pending_badlength_states=" << p.wrong_length_states;
+  return o.str();
+}
+
+// ---- ControlPort ---------------------------------------------------------------------------------------
+
+ControlPort::ControlPort(Server& server, std::string bind_ip, uint16_t port)
+    : server_(server), bind_ip_(std::move(bind_ip)), port_(port) {}
+
+ControlPort::~ControlPort() { stop(); }
+
+void ControlPort::start() {
+  try {
+    listener_.listen(bind_ip_, port_);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("control port cannot start: ") + e.what());
+  }
+  port_ = listener_.localPort();
+  stopping_ = false;
+  thread_ = std::thread([this] { run(); });
+}
+
+void ControlPort::stop() {
+  stopping_ = true;
+  if (thread_.joinable()) thread_.join();
+  listener_.close();
+}
+
+void ControlPort::run() {
+  net::nameThisThread("rci-sim-control");
+  while (!stopping_) {
+    if (auto conn = listener_.accept(kPollMs)) serve(*conn);
+  }
+}
+
+void ControlPort::serve(net::TcpConnection& conn) {
+  std::string line;
+  while (!stopping_) {
+    char ch = 0;
+    const net::IoResult r = conn.readExact(&ch, 1, kPollMs);
+    if (r == net::IoResult::kTimeout) continue;
+    if (r != net::IoResult::kOk) return;
+    if (ch != '\n') {
+      if (ch != '\r') line += ch;
+      if (line.size() <= kMaxLineLength) continue;
+      const std::string answer = "error line longer than " + std::to_string(kMaxLineLength) + " characters\n";
+      conn.sendAll(answer.data(), answer.size(), 1000);
+      return;
+    }
+    if (line == "quit" || line == "exit") return;
+    const std::string answer = executeControlLine(server_, line) + "\n";
+    line.clear();
+    if (conn.sendAll(answer.data(), answer.size(), 1000) != net::IoResult::kOk) return;
+  }
+}
+
+}  // namespace xmate::sim

@@ -1,0 +1,8 @@
+# The simulator server (server*): sockets, clocks, reboot, fault injection and the control port
+# around the controller. Included from CMakeLists.txt next to this file.
+target_sources(rci_core PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/server.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/server_control.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/server_cycle.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/server_faults.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/server_session.cpp)

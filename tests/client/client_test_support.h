@@ -1,0 +1,77 @@
+// Shared helpers of the client tests: a simulator on a free loopback port (lock-step clock), a
+// robot connected to it, bounded waits, and small motions that end with MotionFinished.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include <xmate/robot.h>
+
+#include "sim/server.h"
+
+namespace client_test {
+
+struct SimOptions {
+  xmate::XmateType type = xmate::XMATE7_PRO;
+  bool motors_on = true;
+  bool loopback_io = false;
+  bool reject_connect = false;
+  int reboot_pause_ms = 200;
+  int instability_threshold = 15;
+  // Lock-step: wall time the simulator waits for an answer before the cycle counts as lost. Keep it
+  // below the client's 100 ms silence limit in tests that lose answers on purpose.
+  int lockstep_timeout_ms = 200;
+  xmate::sim::ClockMode clock = xmate::sim::ClockMode::kLockStep;
+};
+
+// A started simulator bound to 127.0.0.1 on a free port.
+std::unique_ptr<xmate::sim::Server> startSim(const SimOptions& options = {});
+// A robot for that simulator (not yet connected: the first call connects).
+std::unique_ptr<xmate::Robot> robotFor(const xmate::sim::Server& server, xmate::XmateType type = xmate::XMATE7_PRO);
+// A TCP port nobody listens on (bound and released again).
+uint16_t unusedPort();
+
+// Runs action on its own thread once the simulator reports a motion running (and `after_ms` more),
+// so faults hit the middle of a motion; joins in the destructor.
+class DuringMotion {
+ public:
+  DuringMotion(xmate::sim::Server& server, std::function<void()> action, int after_ms = 20);
+  ~DuringMotion();
+  DuringMotion(const DuringMotion&) = delete;
+  DuringMotion& operator=(const DuringMotion&) = delete;
+  bool fired() const { return *fired_; }
+
+ private:
+  std::shared_ptr<std::atomic<bool>> fired_ = std::make_shared<std::atomic<bool>>(false);
+  std::thread thread_;
+};
+
+// Polls condition until it holds or limit_ms passes (a safety net, not a timing claim).
+bool eventually(const std::function<bool()>& condition, int limit_ms = 10000);
+
+// Runs call, retried while the controller answers "not possible" (CommandException) because the
+// robot is still stopping from the previous motion or drag (a stop ramp takes a few cycles).
+void whenReady(const std::function<void()>& call);
+void startMoveWhenReady(xmate::Robot& robot, RCI::robot::StartMoveRequest::ControllerMode controller_mode,
+                        RCI::robot::StartMoveRequest::MotionGeneratorMode motion_mode);
+
+// Holds the joints where they are for `cycles` cycles, then ends with MotionFinished.
+xmate::JointControl holdStill(int cycles, int* calls = nullptr);
+
+// Runs MOVEJ-like joint motion from the robot's position by delta on joint `joint` with a smooth
+// (7th-order) profile of `seconds`, through startMove + Control.
+void smoothJointMove(xmate::Robot& robot, int joint, double delta, double seconds);
+
+// The largest |a[i] - b[i]| over the first n elements.
+template <size_t N>
+double maxAbsDiff(const std::array<double, N>& a, const std::array<double, N>& b, size_t n = N) {
+  double m = 0;
+  for (size_t i = 0; i < n; ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+}  // namespace client_test

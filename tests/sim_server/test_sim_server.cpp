@@ -1,0 +1,426 @@
+// Tests of sim::Server over real loopback sockets with a raw client: the Connect handshake, the
+// 1 kHz stream, lock-step stepping and lost answers, every packet fault as seen on the wire,
+// session rules, reboot, kill, and the bind failure message.
+#include <QtTest>
+
+#include <stdexcept>
+#include <vector>
+
+#include "test_support.h"
+
+using namespace simtest;
+using namespace xmate;
+using protocol::Command;
+using protocol::DecodeStatus;
+using RCI::robot::RobotState;
+
+namespace {
+
+// message_id sits in the first 8 bytes (big-endian) of every state, even a corrupted one.
+uint64_t rawMessageId(const Datagram& d) {
+  uint64_t id = 0;
+  for (int i = 0; i < 8; ++i) id = id << 8 | d.bytes[size_t(i)];
+  return id;
+}
+
+std::vector<Datagram> collect(RawClient& client, int count) {
+  std::vector<Datagram> out;
+  while (int(out.size()) < count) {
+    std::optional<Datagram> d = client.receive(5000);
+    if (!d) throw std::runtime_error("the stream stopped after " + std::to_string(out.size()) + " datagrams");
+    out.push_back(*d);
+  }
+  return out;
+}
+
+// Waits until the server has applied a whole packet fault (done() on its pending faults), then
+// returns every datagram received up to the first one sent after that: all the faulty ones.
+std::vector<Datagram> collectFault(RawClient& client, const sim::Server& server,
+                                   const std::function<bool(const sim::PendingFaults&)>& done) {
+  if (!eventually([&] { return done(server.status().pending); }))
+    throw std::runtime_error("the fault was never applied");
+  const uint64_t first_clean = server.status().message_id;
+  std::vector<Datagram> out;
+  for (;;) {
+    std::optional<Datagram> d = client.receive(5000);
+    if (!d) throw std::runtime_error("the stream stopped after " + std::to_string(out.size()) + " datagrams");
+    out.push_back(*d);
+    if (rawMessageId(*d) >= first_clean) return out;
+  }
+}
+
+std::vector<uint64_t> idsOf(const std::vector<Datagram>& datagrams) {
+  std::vector<uint64_t> ids;
+  for (const Datagram& d : datagrams) ids.push_back(rawMessageId(d));
+  return ids;
+}
+
+// The state the lock-step server is waiting on (it cannot move on without our answer).
+RobotState awaitWantedState(RawClient& client, const sim::Server& server) {
+  for (int i = 0; i < 20000; ++i) {
+    const std::optional<RobotState> s = client.receiveState(5000);
+    if (!s) throw std::runtime_error("no state while waiting for the one that needs an answer");
+    if (server.status().awaiting_answer_to == s->message_id) return *s;
+  }
+  throw std::runtime_error("no state needing an answer arrived");
+}
+
+uint8_t wireSafetyStop(RawClient& client) { return client.requestByte(Command::kGetSafetyStopState); }
+
+}  // namespace
+
+class TestSimServer : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void connectHandshakeStartsTheStream() {
+    auto server = startServer();
+    RawClient client(server->port());
+    QVERIFY(!client.receive(100));  // nothing before Connect
+    QCOMPARE(int(client.handshake()), int(protocol::ConnectStatus::kSuccess));
+    const std::optional<RobotState> state = client.receiveState(5000);
+    QVERIFY(state.has_value());
+    const sim::ServerStatus st = server->status();
+    QVERIFY(st.session);
+    QVERIFY(st.streaming);
+    QCOMPARE(QString::fromStdString(st.client), QString("127.0.0.1:%1").arg(client.udpPort()));
+    QCOMPARE(st.counters.sessions, uint64_t(1));
+  }
+
+  void incompatibleConnectGetsNoStream() {
+    sim::ServerConfig config;
+    config.sim.reject_connect_as_incompatible = true;
+    auto server = startServer(config);
+    RawClient client(server->port());
+    QCOMPARE(int(client.handshake()), int(protocol::ConnectStatus::kIncompatibleLibraryVersion));
+    QVERIFY(!client.receive(300));
+    QVERIFY(!server->status().streaming);
+  }
+
+  void statesStreamWithIncreasingMessageIds() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    const std::vector<Datagram> datagrams = collect(*client, 300);
+    for (size_t i = 0; i < datagrams.size(); ++i) {
+      QCOMPARE(datagrams[i].size, long(protocol::kRobotStateSize));
+      RobotState s;
+      QCOMPARE(datagrams[i].decode(s), DecodeStatus::kOk);
+      if (i > 0) QCOMPARE(rawMessageId(datagrams[i]), rawMessageId(datagrams[i - 1]) + 1);
+    }
+    QVERIFY(server->status().counters.cycles >= 300);
+  }
+
+  void lockStepAdvancesOneCyclePerAnswer() {
+    auto server = startServer(lockStepConfig(20000));
+    auto client = connectedClient(*server);
+    startJointMotion(*client);
+    RobotState state = awaitWantedState(*client, *server);
+    for (int i = 0; i < 30; ++i) {
+      const uint64_t cycles = server->status().counters.cycles;
+      if (i % 10 == 0) QVERIFY(!client->receive(100));  // without an answer the simulator waits
+      QCOMPARE(server->status().counters.cycles, cycles);
+      client->answer(state);
+      const std::optional<RobotState> next = client->receiveState(5000);
+      QVERIFY(next.has_value());
+      QCOMPARE(next->message_id, state.message_id + 1);
+      QCOMPARE(server->status().counters.cycles, cycles + 1);
+      state = *next;
+    }
+    const sim::ServerStatus st = server->status();
+    QCOMPARE(st.counters.commands_used, uint64_t(30));
+    QCOMPARE(st.counters.commands_lost, uint64_t(0));
+    client->answer(state, /*finished=*/true);
+    QVERIFY(eventually([&] { return !server->status().sim.motion_active; }));
+  }
+
+  void lostAnswerIsCountedAfterTheTimeout() {
+    auto server = startServer(lockStepConfig(200));
+    auto client = connectedClient(*server);
+    startJointMotion(*client);
+    const RobotState unanswered = awaitWantedState(*client, *server);
+    const std::optional<RobotState> next = client->receiveState(10000);  // after the 200 ms timeout
+    QVERIFY(next.has_value());
+    QCOMPARE(next->message_id, unanswered.message_id + 1);
+    sim::ServerStatus st = server->status();
+    QCOMPARE(st.counters.commands_lost, uint64_t(1));
+    QVERIFY(st.sim.lost_commands >= 1);  // the controller saw the loss, too
+    client->answer(*next);
+    const std::optional<RobotState> after = client->receiveState(10000);
+    QVERIFY(after.has_value());
+    QCOMPARE(after->message_id, next->message_id + 1);
+    QCOMPARE(server->status().counters.commands_lost, uint64_t(1));
+  }
+
+  void droppedStatesLeaveAGapOfExactlyN() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    const std::optional<RobotState> before = client->receiveState(5000);
+    QVERIFY(before.has_value());
+    server->dropStates(5);
+    std::vector<uint64_t> ids =
+        idsOf(collectFault(*client, *server, [](const sim::PendingFaults& p) { return p.drop_states == 0; }));
+    ids.insert(ids.begin(), before->message_id);
+    int gaps_of_five = 0;
+    for (size_t i = 1; i < ids.size(); ++i) {
+      QVERIFY(ids[i] > ids[i - 1]);
+      if (ids[i] - ids[i - 1] == 6) ++gaps_of_five;
+    }
+    QCOMPARE(gaps_of_five, 1);
+    QCOMPARE(server->status().counters.states_dropped, uint64_t(5));
+    QCOMPARE(server->status().pending.drop_states, 0);
+  }
+
+  void reorderedStatesArriveWithPairsSwapped() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    server->reorderStates(4);
+    const std::vector<uint64_t> ids =
+        idsOf(collectFault(*client, *server, [](const sim::PendingFaults& p) { return p.reorder_states == 0; }));
+    std::vector<size_t> swaps;
+    for (size_t i = 1; i < ids.size(); ++i)
+      if (ids[i] + 1 == ids[i - 1]) swaps.push_back(i);
+    QCOMPARE(swaps.size(), size_t(2));
+    QCOMPARE(swaps[1], swaps[0] + 2);  // two neighbouring pairs: b a d c
+    QCOMPARE(ids[swaps[1] - 1], ids[swaps[0]] + 3);
+    QCOMPARE(server->status().counters.states_reordered, uint64_t(4));
+  }
+
+  void corruptedStatesFailToDecode() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    server->corruptStates(3);
+    const std::vector<Datagram> datagrams =
+        collectFault(*client, *server, [](const sim::PendingFaults& p) { return p.corrupt_states == 0; });
+    int bad = 0;
+    for (const Datagram& d : datagrams) {
+      QCOMPARE(d.size, long(protocol::kRobotStateSize));
+      RobotState s;
+      const DecodeStatus status = d.decode(s);
+      QVERIFY(status == DecodeStatus::kOk || status == DecodeStatus::kBadValue);
+      if (status == DecodeStatus::kBadValue) ++bad;
+    }
+    QCOMPARE(bad, 3);
+    const std::vector<uint64_t> ids = idsOf(datagrams);
+    for (size_t i = 1; i < ids.size(); ++i) QCOMPARE(ids[i], ids[i - 1] + 1);  // corrupted, not lost
+  }
+
+  void wrongLengthStatesLookLikeAnotherVersion() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    server->sendWrongLengthStates(2);
+    int wrong = 0;
+    for (const Datagram& d :
+         collectFault(*client, *server, [](const sim::PendingFaults& p) { return p.wrong_length_states == 0; })) {
+      RobotState s;
+      if (d.size == long(protocol::kRobotStateSize)) {
+        QCOMPARE(d.decode(s), DecodeStatus::kOk);
+      } else {
+        QCOMPARE(d.size, long(protocol::kRobotStateSize - sim::kWrongLengthDelta));
+        QCOMPARE(d.decode(s), DecodeStatus::kWrongLength);
+        ++wrong;
+      }
+    }
+    QCOMPARE(wrong, 2);
+  }
+
+  void commandFaultsAndBadCommandsAreCounted() {
+    auto server = startServer(lockStepConfig(500));
+    auto client = connectedClient(*server);
+    startJointMotion(*client);
+    RobotState state = awaitWantedState(*client, *server);
+
+    // Malformed and stale datagrams are dropped and counted; the right answer still counts.
+    const uint8_t junk[10] = {1, 2, 3};
+    client->sendRaw(junk, sizeof junk);
+    RobotState old = state;
+    old.message_id -= 3;
+    client->answer(old);
+    client->answer(state);
+    std::optional<RobotState> next = client->receiveState(10000);
+    QVERIFY(next && next->message_id == state.message_id + 1);
+    sim::ServerStatus st = server->status();
+    QCOMPARE(st.counters.commands_malformed, uint64_t(1));
+    QCOMPARE(st.counters.commands_stale, uint64_t(1));
+    QCOMPARE(st.counters.commands_lost, uint64_t(0));
+    state = *next;
+
+    // A dropped answer is lost after the timeout.
+    server->dropCommands(1);
+    client->answer(state);
+    next = client->receiveState(10000);
+    QVERIFY(next && next->message_id == state.message_id + 1);
+    st = server->status();
+    QCOMPARE(st.counters.commands_dropped, uint64_t(1));
+    QCOMPARE(st.counters.commands_lost, uint64_t(1));
+    state = *next;
+
+    // A short delay is waited out in lock-step: the answer still counts.
+    server->delayCommands(1, 30);
+    client->answer(state);
+    next = client->receiveState(10000);
+    QVERIFY(next && next->message_id == state.message_id + 1);
+    st = server->status();
+    QCOMPARE(st.counters.commands_delayed, uint64_t(1));
+    QCOMPARE(st.counters.commands_lost, uint64_t(1));
+    const uint64_t used = st.counters.commands_used;
+    state = *next;
+
+    // A delay longer than the timeout: lost, and stale when it finally arrives.
+    server->delayCommands(1, 900);
+    client->answer(state);
+    next = client->receiveState(10000);
+    QVERIFY(next && next->message_id == state.message_id + 1);
+    QCOMPARE(server->status().counters.commands_lost, uint64_t(2));
+    QCOMPARE(server->status().counters.commands_used, used);
+    state = *next;
+    QVERIFY(eventually([&] {  // keep the motion going until the late answer turns up
+      client->answer(state);
+      next = client->receiveState(10000);
+      if (next) state = *next;
+      return server->status().counters.commands_stale == 2;
+    }));
+    QCOMPARE(server->status().counters.commands_lost, uint64_t(2));
+  }
+
+  void secondClientIsTurnedAway() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    net::TcpConnection second = net::TcpConnection::connect(net::makeEndpoint("127.0.0.1", server->port()), 2000);
+    uint8_t byte = 0;
+    QCOMPARE(second.readExact(&byte, 1, 10000), net::IoResult::kClosed);
+    QCOMPARE(int(client->requestByte(Command::kGetMotorState)), 0);  // the first session goes on
+  }
+
+  void closingTheSessionStopsStreamAndMotion() {
+    auto server = startServer(lockStepConfig(500));
+    {
+      auto client = connectedClient(*server);
+      startJointMotion(*client);
+      client->answer(awaitWantedState(*client, *server));
+    }
+    QVERIFY(eventually([&] {
+      const sim::ServerStatus st = server->status();
+      return !st.session && !st.streaming && !st.sim.motion_active;
+    }));
+  }
+
+  void sceneCallsReachTheController() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    const std::array<double, 6> wrench{1, -2, 3, 0.1, -0.2, 0.3};
+    server->setExternalWrench(wrench);
+    QCOMPARE(server->status().sim.external_wrench, wrench);
+    server->setEmergencyStop(true);
+    QCOMPARE(server->status().sim.safety_stop, 2);
+    QCOMPARE(int(wireSafetyStop(*client)), 1);  // wire: 0 none, 1 ESTOP, 2 GSTOP
+    server->setEmergencyStop(false);
+    server->setGuardStop(true);
+    QCOMPARE(int(wireSafetyStop(*client)), 2);
+    server->setGuardStop(false);
+    QCOMPARE(int(wireSafetyStop(*client)), 0);
+    server->setDigitalInput(4, true);
+    QVERIFY(client->digitalInput(4));
+    QVERIFY(!client->digitalInput(3));
+    server->setDoToDiLoopback(true);
+    QCOMPARE(int(client->requestByte(protocol::SetDORequest{2, true})), 0);
+    QVERIFY(client->digitalInput(2));
+  }
+
+  void refusalsAreReportedWithTheControllersReason() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    QCOMPARE(QString::fromStdString(server->status().last_refusal), QString());
+    using Req = RCI::robot::StartMoveRequest;
+    const uint8_t status = client->requestByte(protocol::StartMoveRequestMsg{
+        uint8_t(Req::ControllerMode::kJointPosition), uint8_t(Req::MotionGeneratorMode::kJointPosition)});
+    QCOMPARE(int(status), int(protocol::StartMoveStatus::kNotPossible));  // the motors are off
+    const QString reason = QString::fromStdString(server->status().last_refusal);
+    QVERIFY2(reason.startsWith("startMove") && reason.contains("motors"), qPrintable(reason));
+  }
+
+  void badArgumentsAreRefused() {
+    auto server = startServer();
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, server->setDigitalInput(6, true));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, server->dropStates(0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, server->delayCommands(1, -5));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, server->setExternalWrench({0, 0, std::nan(""), 0, 0, 0}));
+  }
+
+  void rebootClosesTheSessionAndRestoresDefaults() {
+    sim::ServerConfig config;
+    config.reboot_pause_ms = 200;
+    auto server = startServer(config);
+    auto client = connectedClient(*server);
+    QCOMPARE(int(client->requestByte(protocol::SetMotorPowerRequest{1})), 0);
+    QCOMPARE(int(client->requestByte(Command::kGetMotorState)), 1);
+    server->setEmergencyStop(true);  // the world: survives the reboot
+    server->setEmergencyStop(false);
+    server->setDigitalInput(1, true);
+    QCOMPARE(int(client->requestByte(Command::kRebootRobot)), 0);
+
+    uint8_t byte = 0;
+    QCOMPARE(client->tcp().readExact(&byte, 1, 10000), net::IoResult::kClosed);
+    client->drain();
+    QVERIFY(!client->receive(300));  // the old session's stream is over
+
+    std::unique_ptr<RawClient> again;
+    QVERIFY(eventually([&] {
+      try {
+        again = connectedClient(*server);
+        return true;
+      } catch (const std::exception&) {
+        return false;
+      }
+    }));
+    QCOMPARE(int(again->requestByte(Command::kGetMotorState)), 0);  // fresh controller: motors off
+    QVERIFY(again->digitalInput(1));                                  // the scene is kept
+    const sim::ServerStatus st = server->status();
+    QCOMPARE(st.counters.reboots, uint64_t(1));
+    QCOMPARE(st.counters.sessions, uint64_t(2));
+    QVERIFY(!st.rebooting);
+  }
+
+  void killStopsEverythingUntilRestarted() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    const uint16_t port = server->port();
+    server->kill();
+    uint8_t byte = 0;
+    QCOMPARE(client->tcp().readExact(&byte, 1, 10000), net::IoResult::kClosed);
+    client->drain();
+    QVERIFY(!client->receive(300));
+    QVERIFY_THROWS_EXCEPTION(std::runtime_error,
+                             net::TcpConnection::connect(net::makeEndpoint("127.0.0.1", port), 2000));
+    const sim::ServerStatus st = server->status();
+    QVERIFY(st.killed);
+    QVERIFY(!st.streaming);
+    QVERIFY(!st.session);
+
+    server->stop();
+    server->start();
+    QCOMPARE(server->port(), port);
+    auto fresh = connectedClient(*server);
+    QCOMPARE(int(fresh->requestByte(Command::kGetMotorState)), 0);
+    QVERIFY(!server->status().killed);
+  }
+
+  void bindFailureSaysWhatToDo() {
+    auto first = startServer();
+    sim::ServerConfig config;
+    config.port = first->port();
+    sim::Server second(config);
+    try {
+      second.start();
+      QFAIL("a second server on the same port must not start");
+    } catch (const std::runtime_error& e) {
+      const QString message = e.what();
+      QVERIFY2(message.contains(QString::number(first->port())), e.what());
+      QVERIFY2(message.contains("in use"), e.what());
+      QVERIFY2(message.contains("choose another port"), e.what());
+    }
+    QVERIFY(!second.running());
+  }
+};
+
+QTEST_APPLESS_MAIN(TestSimServer)
+#include "test_sim_server.moc"
