@@ -1,0 +1,132 @@
+// Session: the only door from the window to a robot (DESIGN.md, "Threads"). It owns the robot
+// client (xmate::Robot), and for the built-in simulator also the embedded sim::Server. Widgets
+// never touch the network: they read live() on tick(), receive state samples by samplesArrived(),
+// and hand commands to run() / runMotion(), which execute on worker threads.
+#pragma once
+
+#include <QObject>
+#include <QString>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+
+#include <xmate/rci_types.h>
+#include <xmate/robot.h>
+#include <xmate/types.h>
+
+#include "client/connection.h"
+#include "client/state_sample.h"
+#include "net/realtime.h"
+#include "sim/server.h"
+
+namespace rci::ui {
+
+// What to connect to.
+struct SessionTarget {
+  enum class Kind { kSimulator, kRobot };
+  Kind kind = Kind::kSimulator;
+  xmate::XmateType type = xmate::XMATE7_PRO;
+  QString host = QStringLiteral("192.168.0.160");  // kRobot only
+  quint16 port = 1337;                              // kRobot only
+  // kSimulator only: lock-step clock (deterministic tests) instead of real time.
+  bool lockstep = false;
+  // kSimulator only: DO k drives DI k.
+  bool loopback = false;
+  QString describe() const;  // "Simulator (xMate7 Pro)" / "Robot 192.168.0.160:1337 (xMate7 Pro)"
+};
+
+// Everything the panels and the status bar show, refreshed on the GUI thread before each tick().
+struct LiveState {
+  bool connected = false;
+  bool has_state = false;              // at least one RobotState arrived
+  RCI::robot::RobotState state;        // the newest state
+  std::array<double, 7> tau_ext{};     // external joint torques, Nm (J^T of tau_ext_in_base)
+  int dof = 7;                         // 6 for xMate3 / xMate7 (6-axis models)
+  int motor_state = 0;                 // 1 on, 0 off (polled by the command worker, ~5 Hz)
+  int safety_stop = 1;                 // 1 none, 2 ESTOP, 3 GSTOP (polled, ~5 Hz)
+  std::array<bool, 6> digital_in{};    // polled, ~5 Hz
+  std::array<bool, 6> digital_out{};   // as last set through run() (the robot cannot report it)
+  bool motion_running = false;         // a runMotion() job is executing
+  xmate::net::RealtimeStatus realtime; // what the client's real-time thread got
+  xmate::client::SessionTiming timing; // loop rate, jitter, counters
+  double loop_rate_hz = 0;             // states per second over the last second
+  bool simulated = false;
+  xmate::sim::SimStatus sim;           // valid when simulated
+};
+
+// Settings the window sent that a robot cannot report back. The panel that sends one records it
+// here after the command succeeded (setOperatorSettings); views (3D box, collision bars) read it.
+struct SafetyBox {
+  bool enabled = false;
+  std::array<double, 3> size{1.2, 1.2, 1.2};                     // m, along the box frame's axes
+  std::array<double, 16> frame{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0.5, 0, 0, 0, 1};  // centre, base frame
+};
+struct OperatorSettings {
+  SafetyBox box;
+  std::array<double, 7> collision_thresholds{};  // Nm per joint; 0 = not set by this window
+  bool soft_limits_enabled = false;
+  std::array<double, 7> soft_upper_deg{}, soft_lower_deg{};
+};
+
+class Session : public QObject {
+  Q_OBJECT
+ public:
+  explicit Session(QObject* parent = nullptr);
+  ~Session() override;  // close()s
+
+  // Connects in the background; emits opened() or openFailed(reason). Closes any open session first.
+  void open(const SessionTarget& target);
+  // Stops motion, disconnects, stops the embedded simulator. Emits closed("").
+  void close();
+  bool isOpen() const;
+  const SessionTarget& target() const;
+
+  // GUI thread only. Valid between opened() and closed().
+  const LiveState& live() const;
+  // The client (for type(), toolFrame(), load()); nullptr when closed. Do not call commands on it
+  // from the GUI thread: use run().
+  xmate::Robot* robot();
+  // The embedded simulator (scene: external wrench, e-stop, DI levels); nullptr on a real robot.
+  // Its calls are quick and may be made from the GUI thread.
+  xmate::sim::Server* simulator();
+
+  // Queues job on the command worker (one at a time, in order). When it returns, emits
+  // commandFinished(label, true, ""), or (label, false, what()) if it threw. Never blocks.
+  void run(const QString& label, std::function<void(xmate::Robot&)> job);
+  // Runs a motion (startMove + Control()) on the motion worker; at most one at a time (refused with
+  // commandFinished(label, false, "a motion is already running") otherwise). The job should poll
+  // stopRequested() in its callback and finish smoothly when it is set.
+  void runMotion(const QString& label, std::function<void(xmate::Robot&)> job);
+  // The window's record of settings sent (see OperatorSettings). GUI thread only.
+  const OperatorSettings& operatorSettings() const;
+  void setOperatorSettings(const OperatorSettings& settings);  // emits operatorSettingsChanged()
+
+  void requestStop();                 // sets stopRequested() until the running motion ends
+  bool stopRequested() const;         // any thread
+
+ signals:
+  void opened();
+  void openFailed(const QString& reason);
+  void closed(const QString& reason);  // "" when asked for; else why (controller gone, ...)
+  // Display rate (30 Hz): live() was refreshed.
+  void tick();
+  // Display rate, before tick(): the samples the real-time thread recorded since the last batch,
+  // oldest first. The pointer is valid only during the call (connect directly, GUI thread).
+  void samplesArrived(const xmate::client::StateSample* samples, int count);
+  void commandFinished(const QString& label, bool ok, const QString& message);
+  void operatorSettingsChanged();
+  void motionStarted(const QString& label);
+  void motionFinished(const QString& label, bool ok, const QString& message);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// "xMate7 Pro" etc.
+QString modelName(xmate::XmateType type);
+// Parses "xmate7_pro" | "xmate3_pro" | "xmate7" | "xmate3"; false if unknown.
+bool parseModel(const QString& text, xmate::XmateType& type);
+
+}  // namespace rci::ui
