@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include <xmate/model.h>
 #include <xmate/robot.h>
 
 #include "client/connection.h"
@@ -196,6 +197,17 @@ void TestRobotCommands::toolAndLoadAreRememberedAndApplied() {
   QCOMPARE(mass, 2.5);
   QCOMPARE(center[2], 0.05);
   QCOMPARE(inertia[4], 0.01);
+
+  // A model made from the robot starts with its tool: its TCP pose is the one the controller reports.
+  xmate::XmateModel model(robot.get(), xmate::XMATE7_PRO);
+  const auto state = robot->receiveRobotState();
+  QVERIFY(maxAbsDiff(model.GetCartPose(state.q), state.toolTobase_pos_m) < 1e-6);
+  // ... and its payload: the gravity torques differ from those of an unloaded model.
+  xmate::XmateModel unloaded(xmate::XMATE7_PRO);
+  std::array<double, 7> full{}, inertial{}, coriolis{}, gravity{}, gravity_unloaded{};
+  model.GetTauNoFriction(state.q, {}, {}, full, inertial, coriolis, gravity);
+  unloaded.GetTauNoFriction(state.q, {}, {}, full, inertial, coriolis, gravity_unloaded);
+  QVERIFY(maxAbsDiff(gravity, gravity_unloaded) > 0.1);
 }
 
 void TestRobotCommands::validationRejectsBeforeSending_data() {

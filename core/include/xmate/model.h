@@ -30,8 +30,9 @@ class XmateModel {
     kIkSingular = -8,          // the pose is (within 1e-6) a shoulder, elbow or wrist singularity
   };
 
-  // robot may be nullptr: an offline model. The model starts with no tool and no payload; set them
-  // with SetCoor / SetLoad (the robot's own tool and load are not read yet: see docs/kinematics.md).
+  // robot may be nullptr: an offline model with no tool and no payload. With a robot, the model
+  // starts with the tool and payload last set through that robot (setCoor, setLoad); SetCoor /
+  // SetLoad change the model's copy only.
   XmateModel(Robot* robot, XmateType type);
   explicit XmateModel(XmateType type);
   ~XmateModel();

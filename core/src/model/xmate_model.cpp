@@ -2,6 +2,7 @@
 // around the internal ArmModel (kinematics.h, inverse_kinematics.h, dynamics.h). The arm is loaded
 // from the model's URDF with urdfdom when the XmateModel is constructed.
 #include <xmate/model.h>
+#include <xmate/robot.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -65,7 +66,16 @@ struct XmateModel::Impl {
   model::ArmModel arm;
 };
 
-XmateModel::XmateModel(Robot* /*robot*/, XmateType type) : XmateModel(type) {}
+// With a robot, the model starts with the tool and payload last set through it (setCoor, setLoad).
+XmateModel::XmateModel(Robot* robot, XmateType type) : XmateModel(type) {
+  if (robot == nullptr) return;
+  SetCoor(robot->toolFrame());
+  double mass = 0;
+  std::array<double, 3> center{};
+  std::array<double, 9> inertia{};
+  robot->load(mass, center, inertia);
+  SetLoad(mass, center, inertia);
+}
 XmateModel::XmateModel(XmateType type) : impl_(std::make_unique<Impl>(Impl{type, loadArm(type)})) {}
 XmateModel::~XmateModel() = default;
 XmateModel::XmateModel(const XmateModel& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
