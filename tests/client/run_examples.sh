@@ -30,15 +30,18 @@ export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export RCI_DATA_DIR="$work/prefix/share/rci"
 
 # Starts the installed rci-sim for model $1 on a free port; sets sim_pid and port.
+# Each start writes a fresh file: the redirection happens in the background child, so reading a
+# reused file could return the previous simulator's port.
 start_sim() {
-  "$work/prefix/bin/rci-sim" --model "$1" --lockstep --port 0 --print-port > "$work/sim.out" 2> "$work/sim.err" &
+  sim_starts=$((${sim_starts:-0} + 1)); sim_out="$work/sim-$sim_starts.out"
+  "$work/prefix/bin/rci-sim" --model "$1" --lockstep --port 0 --print-port > "$sim_out" 2> "$work/sim.err" &
   sim_pid=$!
   for _ in $(seq 1 100); do
-    port=$(head -n 1 "$work/sim.out" 2>/dev/null || true)
+    port=$(head -n 1 "$sim_out" 2>/dev/null || true)
     if [[ "$port" =~ ^[0-9]+$ ]]; then return 0; fi
     sleep 0.1
   done
-  echo "rci-sim did not print its port:"; cat "$work/sim.out" "$work/sim.err"; exit 1
+  echo "rci-sim did not print its port:"; cat "$sim_out" "$work/sim.err"; exit 1
 }
 
 stop_sim() {
