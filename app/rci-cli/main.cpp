@@ -1,6 +1,6 @@
 // rci-cli: headless tools for xMate robots (docs/client.md). Without arguments it describes the
 // default model; subcommands read a robot's state live, check the machine's real-time setup, and
-// benchmark the 1 kHz loop and the client's cost per cycle.
+// benchmark the 1 kHz loop and the client's cost per cycle, and run taught programs headless.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     }
     if (command == "model") return runModel(Args({words.begin() + 1, words.end()}));
     if (command == "state") return runState(Args({words.begin() + 1, words.end()}));
+    if (command == "run") return runRun(Args({words.begin() + 1, words.end()}));
     if (command == "doctor") return runDoctor(Args({words.begin() + 1, words.end()}));
     if (command == "bench") {
       if (words.size() < 2) throw UsageError("bench needs 'loop' or 'client'");

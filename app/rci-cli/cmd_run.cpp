@@ -1,0 +1,166 @@
+// rci-cli run: loads a program, connects to a robot (or starts an in-process simulator for the
+// program's model), runs the pre-flight and the executor (core/src/teach), prints a line per
+// instruction, and writes the run report. Ctrl-C stops the robot smoothly on its path.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <thread>
+
+#include <xmate/robot.h>
+
+#include "cli.h"
+#include "model/robot_spec.h"
+#include "sim/server.h"
+#include "teach/executor.h"
+#include "teach/program_io.h"
+#include "teach/report.h"
+
+namespace rci_cli {
+namespace {
+
+using namespace xmate::teach;
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void onInterrupt(int) { g_interrupted.store(true); }
+
+struct RunOptions {
+  std::string program_path;
+  bool in_process = false;
+  HostPort robot;
+  bool have_robot = false;
+  bool have_model = false;
+  xmate::XmateType model = xmate::XMATE7_PRO;
+  double speed = 1.0;
+  std::string report_path;
+};
+
+double parseRatio(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(v >= 0.1 && v <= 1.0))
+    throw UsageError(option + " '" + text + "': expected a speed override between 0.1 and 1.0 (e.g. 0.5 = 50 %)");
+  return v;
+}
+
+RunOptions parseRunOptions(Args& args) {
+  RunOptions o;
+  while (!args.done()) {
+    const std::string option = args.take();
+    if (option == "--robot") {
+      const std::string v = args.value(option);
+      o.in_process = v == "sim";
+      if (!o.in_process) o.robot = parseHostPort(option, v);
+      o.have_robot = true;
+    } else if (option == "--model") {
+      o.model = parseModel(option, args.value(option));
+      o.have_model = true;
+    } else if (option == "--speed") {
+      o.speed = parseRatio(option, args.value(option));
+    } else if (option == "--report") {
+      o.report_path = args.value(option);
+      if (o.report_path.empty()) throw UsageError("--report needs a file name");
+    } else if (!option.empty() && option[0] == '-') {
+      throw UsageError("run: unknown option '" + option + "'");
+    } else if (o.program_path.empty()) {
+      o.program_path = option;
+    } else {
+      throw UsageError("run: more than one program given ('" + o.program_path + "', '" + option + "')");
+    }
+  }
+  if (o.program_path.empty()) throw UsageError("run needs a program file (PROGRAM.json)");
+  if (!o.have_robot) throw UsageError("run needs --robot sim or --robot HOST:PORT");
+  return o;
+}
+
+std::unique_ptr<xmate::sim::Server> startSimulator(xmate::XmateType type) {
+  xmate::sim::ServerConfig c;
+  c.bind_ip = "127.0.0.1";
+  c.port = 0;
+  c.clock = xmate::sim::ClockMode::kLockStep;  // deterministic on a loaded machine
+  c.sim.type = type;
+  c.sim.motors_on_at_start = true;
+  c.sim.do_to_di_loopback = true;  // DO k drives DI k, so SET_DO / WAIT_DI pairs work without wiring
+  auto server = std::make_unique<xmate::sim::Server>(std::move(c));
+  server->start();
+  return server;
+}
+
+void printDone(const Program& program, size_t i, const InstructionReport& r) {
+  const Instruction& in = program.instructions[i];
+  std::printf("[%zu/%zu] %-7s %-10s %-8s %7.3f s", i + 1, program.instructions.size(), typeName(in.type),
+              in.name.c_str(), statusName(r.status), r.duration);
+  if (isMotion(in.type))
+    std::printf("  TCP (%.4f, %.4f, %.4f) m  max tracking error %.2e rad / %.3f mm", r.pose[3], r.pose[7],
+                r.pose[11], r.max_joint_error, r.max_tcp_error * 1000);
+  std::printf("\n");
+  if (!r.message.empty() && r.status != InstructionStatus::kDone) std::printf("        %s\n", r.message.c_str());
+  std::fflush(stdout);
+}
+
+// Polls for Ctrl-C and turns it into a smooth stop; ends when `done` is set.
+std::thread interruptWatcher(Executor& executor, const std::atomic<bool>& done) {
+  return std::thread([&executor, &done] {
+    while (!done.load()) {
+      if (g_interrupted.exchange(false)) {
+        std::fprintf(stderr, "rci-cli: interrupted -- stopping the robot smoothly on its path\n");
+        executor.stop();
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  });
+}
+
+}  // namespace
+
+int runRun(Args args) {
+  const RunOptions o = parseRunOptions(args);
+  const Program program = loadProgram(o.program_path);
+  const xmate::XmateType type = o.have_model ? o.model : program.robot;
+  requireRobot(program, type);
+
+  std::unique_ptr<xmate::sim::Server> server;
+  HostPort address = o.robot;
+  if (o.in_process) {
+    server = startSimulator(type);
+    address = {"127.0.0.1", server->port()};
+  }
+  xmate::Robot robot(address.host, address.port, type);
+  robot.connect();
+  std::printf("running %s (%zu instructions, %s) on %s:%u%s at %.0f %% speed\n", o.program_path.c_str(),
+              program.instructions.size(), std::string(xmate::model::robotSpec(type).display_name).c_str(),
+              address.host.c_str(), address.port, o.in_process ? " (in-process simulator)" : "", o.speed * 100);
+  std::fflush(stdout);
+
+  Executor executor;
+  ExecutorOptions options;
+  options.speed_override = o.speed;
+  options.on_done = [&](size_t i, const InstructionReport& r) { printDone(program, i, r); };
+  std::signal(SIGINT, onInterrupt);
+  std::atomic<bool> done{false};
+  std::thread watcher = interruptWatcher(executor, done);
+  const RunReport report = executor.run(robot, program, options);
+  done.store(true);
+  watcher.join();
+  std::signal(SIGINT, SIG_DFL);
+
+  if (!o.report_path.empty()) {
+    saveReport(o.report_path, program, report);
+    std::printf("report written to %s\n", o.report_path.c_str());
+  }
+  switch (report.outcome) {
+    case RunState::kFinished:
+      std::printf("finished: %zu instructions in %.2f s\n", program.instructions.size(), report.duration);
+      return 0;
+    case RunState::kRefused:
+      std::fprintf(stderr, "rci-cli: %s", report.message.c_str());
+      return 1;
+    default:
+      std::fprintf(stderr, "rci-cli: %s: %s\n", runStateName(report.outcome), report.message.c_str());
+      return 1;
+  }
+}
+
+}  // namespace rci_cli

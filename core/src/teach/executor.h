@@ -1,0 +1,127 @@
+// The executor (issue 5): runs a program on the calling thread through the robot's real-time loop
+// with the jerk-limited planners -- MOVEJ in joint position mode (xmate/joint_motion.h), MOVEL and
+// MOVEC in Cartesian position mode (planning/cartesian_trajectory.h, timed within the joint limits
+// by client::planWithinJointLimits) -- after a pre-flight that must find no problem. Another thread
+// may pause, resume, stop, single-step and change the speed override at any time, and read the
+// progress without locks. docs/teach.md describes the behaviour.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <xmate/robot.h>
+
+#include "teach/preflight.h"
+#include "teach/program.h"
+
+namespace xmate::teach {
+
+// progress() reads these without locks from any thread.
+static_assert(std::atomic<double>::is_always_lock_free && std::atomic<long>::is_always_lock_free);
+
+enum class RunState : int {
+  kIdle,      // not started
+  kChecking,  // pre-flight
+  kRunning,
+  kPausing,   // ramping down to a stop on the path
+  kPaused,    // holding (on the path, or between instructions)
+  kStopping,  // ramping down, then the program ends
+  kFinished,  // every instruction done
+  kStopped,   // ended by stop()
+  kRefused,   // the pre-flight found problems; nothing moved
+  kFailed,    // an instruction failed (controller error, DI timeout, planning)
+};
+const char* runStateName(RunState state);
+
+enum class InstructionStatus { kNotRun, kRunning, kDone, kStopped, kFailed };
+const char* statusName(InstructionStatus status);
+
+struct InstructionReport {
+  InstructionStatus status = InstructionStatus::kNotRun;
+  std::string message;              // why it failed or was stopped ("" when done)
+  std::array<double, 7> q{};        // reached joints (rad), measured after the instruction
+  std::array<double, 16> pose{};    // reached TCP pose, row-major (m)
+  double psi = 0;                   // reached arm angle (rad)
+  double duration = 0;              // s: controller cycles for motions, wall time otherwise
+  double max_joint_error = 0;       // motions: max over the motion of max_j |q_c - q| (rad)
+  double max_tcp_error = 0;         // motions: max |TCP commanded - measured| position (m)
+};
+
+struct RunReport {
+  RunState outcome = RunState::kIdle;
+  std::string message;               // the failure or refusal, naming the instruction
+  long failed_instruction = -1;      // 0-based index of the failing instruction, -1 if none
+  std::vector<Problem> problems;     // the pre-flight's (outcome kRefused)
+  std::vector<InstructionReport> instructions;
+  double duration = 0;               // s, wall time of the run
+};
+
+struct ExecutorOptions {
+  double speed_override = 1.0;  // 0.1 .. 1.0 (also settable while running)
+  bool single_step = false;     // pause after each instruction
+  bool has_soft_limits = false; // for the pre-flight (the robot's setJointLimit), rad
+  std::array<double, 7> soft_lower{}, soft_upper{};
+  bool has_box = false;         // for the pre-flight (the robot's setCartesianLimit)
+  SafetyBox box;
+  // Called on the run's thread (never the real-time one) when an instruction starts and ends.
+  std::function<void(size_t index)> on_start;
+  std::function<void(size_t index, const InstructionReport& report)> on_done;
+};
+
+// A lock-free snapshot of the run.
+struct Progress {
+  RunState state = RunState::kIdle;
+  long instruction = -1;    // 0-based index of the current instruction, -1 before the first
+  double fraction = 0;      // of the current instruction, 0..1 (plan time / duration for motions)
+  double speed_override = 1.0;
+};
+
+// One executor can run many programs, one at a time, on any robot. The GUI keeps one for its
+// Program panel (controls and progress work at any time) and calls run() from its motion worker
+// (Session::runMotion), which hands it the robot.
+class Executor {
+ public:
+  Executor() = default;
+  Executor(const Executor&) = delete;
+  Executor& operator=(const Executor&) = delete;
+
+  // Runs the program on `robot` to its end (blocking, on the calling thread). Throws nothing for
+  // run-time failures (they are in the report); std::logic_error when another run() is active.
+  RunReport run(Robot& robot, const Program& program, const ExecutorOptions& options = {});
+
+  // ---- Thread-safe controls (any thread, any time; no effect when not running) ----------------
+  void pause();                       // smooth stop on the path; holds until resume()/stop()
+  void resume();                      // ramps back up; in single-step mode runs one more instruction
+  void stop();                        // smooth stop, then the run ends (outcome kStopped)
+  void setSingleStep(bool on);
+  void setSpeedOverride(double ratio);  // clamped to [0.1, 1.0]; ramps smoothly
+  Progress progress() const;
+
+ private:
+  Robot* robot_ = nullptr;  // during run()
+  bool has_soft_limits_ = false;  // during run(): the options' soft limits, for IK of pose targets
+  std::array<double, 7> soft_lower_{}, soft_upper_{};
+  std::atomic<bool> active_{false};
+  std::atomic<bool> pause_requested_{false};
+  std::atomic<bool> stop_requested_{false};
+  std::atomic<bool> single_step_{false};
+  std::atomic<double> override_{1.0};
+  std::atomic<int> state_{int(RunState::kIdle)};
+  std::atomic<long> instruction_{-1};
+  std::atomic<double> fraction_{0};
+
+  void setState(RunState s) { state_.store(int(s)); }
+  // Blocks while paused (between instructions); false when stop() ended the wait.
+  bool waitWhilePaused();
+  InstructionReport execute(const Program& program, size_t index);
+  void runMotion(const Program& program, size_t index, InstructionReport& report);
+  void runWait(const Instruction& in, InstructionReport& report);
+  void runWaitDi(const Program& program, size_t index, InstructionReport& report);
+  void recordReached(InstructionReport& report);
+};
+
+}  // namespace xmate::teach

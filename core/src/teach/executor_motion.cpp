@@ -1,0 +1,224 @@
+// The executor's motions (executor.h): MOVEJ streams the joint S-curve in joint position mode,
+// MOVEL/MOVEC stream the timed Cartesian path in Cartesian position mode. Both sample their plan at
+// a plan time that advances by k * dt per cycle (TimeScaling), which is how pause, stop and the
+// speed override act smoothly on the path. The callbacks run on the real-time thread: they touch
+// only atomics (relaxed loads/stores) and locals, and allocate nothing.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <thread>
+
+#include <xmate/exception.h>
+#include <xmate/joint_motion.h>
+
+#include "client/move_check.h"
+#include "model/robot_spec.h"
+#include "planning/cartesian_pose.h"
+#include "planning/cartesian_trajectory.h"
+#include "teach/executor.h"
+#include "teach/targets.h"
+#include "teach/time_scaling.h"
+
+namespace xmate::teach {
+namespace {
+
+using CM = RCI::robot::StartMoveRequest::ControllerMode;
+using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
+using RCI::robot::RobotState;
+
+constexpr double kDt = 1e-3;
+constexpr double kSettleTolerance = 1e-6;  // rad: measured joints this close to the command = settled
+constexpr int kSettleLimitMs = 1000;
+constexpr int kStartRetryMs = 3000;
+
+// Plan time driven by the controller's message_id and the time scaling. The first two commands are
+// the plan's start (as in client/move.cpp's MotionClock: the controller may measure the motion from
+// the second answer), then each elapsed cycle advances the plan by k * dt.
+struct ScaledClock {
+  TimeScaling scaling;
+  int calls = 0;
+  uint64_t first_id = 0, last_id = 0;
+  double plan_time = 0;
+
+  ScaledClock(double k, double rate) : scaling(k, rate) {}
+  double advance(const RobotState& s, double target_k) {
+    scaling.setTarget(target_k);
+    if (calls++ == 0) first_id = s.message_id;
+    if (calls <= 2) {
+      last_id = s.message_id;
+      return 0;
+    }
+    uint64_t cycles = s.message_id > last_id ? s.message_id - last_id : 0;
+    last_id = s.message_id;
+    if (cycles > 1000) cycles = 1000;  // a gap that long ends the motion in the controller anyway
+    for (uint64_t c = 0; c < cycles; ++c) {
+      scaling.step(kDt);
+      plan_time += scaling.value() * kDt;
+    }
+    return plan_time;
+  }
+  double elapsed() const { return double(last_id - first_id) * kDt; }
+};
+
+double jointError(const RobotState& s, int dof) {
+  double m = 0;
+  for (int i = 0; i < dof; ++i) m = std::max(m, std::abs(s.q_c[i] - s.q[i]));
+  return m;
+}
+
+double tcpError(const RobotState& s) {
+  const auto& c = s.toolTobase_pos_c;
+  const auto& m = s.toolTobase_pos_m;
+  return std::sqrt(std::pow(c[3] - m[3], 2) + std::pow(c[7] - m[7], 2) + std::pow(c[11] - m[11], 2));
+}
+
+// startMove, retried while the controller is still stopping from the previous motion.
+void startMoveWhenReady(Robot& robot, CM controller, MM motion) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(kStartRetryMs);
+  for (;;) {
+    try {
+      robot.startMove(controller, motion);
+      return;
+    } catch (const CommandException&) {
+      if (std::chrono::steady_clock::now() > end) throw;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+}
+
+// The smallest acceleration-to-velocity ratio (1/s) of what a motion of this type is limited by.
+double accelOverVelocity(InstructionType type, const model::RobotSpec& spec) {
+  double ratio = 1e9;
+  if (type == InstructionType::kMoveJ) {
+    for (int i = 0; i < spec.dof; ++i) ratio = std::min(ratio, spec.ddq_max[i] / spec.dq_max[i]);
+    return ratio;
+  }
+  const model::CartesianLimits& c = model::plannerCartesianLimits();
+  return std::min({c.a_trans / c.v_trans, c.a_rot / c.v_rot, c.a_elbow / c.v_elbow});
+}
+
+// Waits (bounded) until the measured joints have caught up with the last command.
+void settle(Robot& robot, int dof) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(kSettleLimitMs);
+  while (std::chrono::steady_clock::now() < end)
+    if (jointError(robot.receiveRobotState(), dof) < kSettleTolerance) return;
+}
+
+}  // namespace
+
+void Executor::runMotion(const Program& program, size_t index, InstructionReport& report) {
+  const Instruction& in = program.instructions[index];
+  const model::RobotSpec& spec = model::robotSpec(robot_->type());
+  const int dof = spec.dof;
+  XmateModel model(robot_->type());
+  model.SetCoor(robot_->toolFrame());
+  model.SetSpeedCheckInterval(0);
+  if (has_soft_limits_) {
+    std::array<double, 7> upper{}, lower{};
+    for (int i = 0; i < 7; ++i) {
+      upper[i] = soft_upper_[i] * 180.0 / std::numbers::pi;
+      lower[i] = soft_lower_[i] * 180.0 / std::numbers::pi;
+    }
+    model.SetJointLimit(upper, lower);  // IK of pose targets as the pre-flight resolved them
+  }
+  const RobotState state = robot_->receiveRobotState();
+
+  const double share = in.speed * kSpeedShare;
+  ScaledClock clock(override_.load(), safeScalingRate(share, accelOverVelocity(in.type, spec)));
+  bool stopped = false;
+  double max_joint_error = 0, max_tcp_error = 0;
+  // What k should go to, and the state to show, this cycle.
+  auto targetK = [&]() -> double {
+    const bool stopping = stop_requested_.load(std::memory_order_relaxed);
+    const bool pausing = pause_requested_.load(std::memory_order_relaxed);
+    if (stopping) setState(RunState::kStopping);
+    else if (pausing) setState(clock.scaling.value() == 0 ? RunState::kPaused : RunState::kPausing);
+    else setState(RunState::kRunning);
+    return stopping || pausing ? 0.0 : override_.load(std::memory_order_relaxed);
+  };
+  auto track = [&](const RobotState& s) {
+    max_joint_error = std::max(max_joint_error, jointError(s, dof));
+    max_tcp_error = std::max(max_tcp_error, tcpError(s));
+  };
+  // Stop requested and the ramp has reached zero: end the motion where it stands.
+  auto stoppedHere = [&]() {
+    return stop_requested_.load(std::memory_order_relaxed) && clock.scaling.value() == 0 && clock.scaling.settled();
+  };
+
+  if (in.type == InstructionType::kMoveJ) {
+    std::array<double, 7> goal{};
+    const int rc = jointGoal(in.target, model, state.q, goal);
+    if (rc != XmateModel::kIkOk)
+      throw MotionException(std::string("the target pose cannot be reached: ") + client::ikFailureText(rc) +
+                            " (IK code " + std::to_string(rc) + ")");
+    std::array<double, 7> q0 = state.q;
+    JointMotionGenerator generator(share, goal, robot_->type());
+    generator.calculateSynchronizedValues_joint(q0);
+    const double total = generator.GetTime();
+    if (total > 0) {
+      std::array<double, 7> last = q0;
+      startMoveWhenReady(*robot_, CM::kJointPosition, MM::kJointPosition);
+      robot_->Control(JointControl([&](RobotState s) -> JointPositions {
+        if (clock.calls == 0) {
+          q0 = s.q;  // where the motion really starts
+          last = q0;
+          generator.calculateSynchronizedValues_joint(q0);
+        }
+        track(s);
+        const double t = clock.advance(s, targetK());
+        fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
+        JointPositions out;
+        if (stoppedHere()) {
+          stopped = true;
+          out.q = last;
+          out.motion_finished = true;
+          return out;
+        }
+        std::array<double, 7> delta{};
+        const bool finished = generator.calculateDesiredValues_joint(t, delta);
+        for (int i = 0; i < dof; ++i) out.q[i] = finished ? goal[i] : q0[i] + delta[i];
+        last = out.q;
+        out.motion_finished = finished;
+        return out;
+      }));
+    }
+  } else {
+    const planning::CartesianPath path = cartesianPath(in, model, state.q);
+    const planning::CartesianTrajectory trajectory =
+        client::planWithinJointLimits(typeName(in.type), path, share, model, state.q);
+    const double total = planning::duration(trajectory);
+    if (total > 0) {
+      CartesianPose last;
+      last.toolTobase_pos_c = planning::poseToRowMajor(path.start.pose);
+      last.psi_valid = dof == 7;
+      last.psi_c = path.start.psi;
+      startMoveWhenReady(*robot_, CM::kCartesianPosition, MM::kCartesianPosition);
+      robot_->Control(CartesianControl([&](RobotState s) -> CartesianPose {
+        track(s);
+        const double t = clock.advance(s, targetK());
+        fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
+        if (stoppedHere()) {
+          stopped = true;
+          return MotionFinished(last);
+        }
+        const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, t);
+        last.toolTobase_pos_c = planning::poseToRowMajor(sample.pose);
+        last.psi_valid = dof == 7;
+        last.psi_c = sample.psi;
+        last.motion_finished = sample.finished;
+        return last;
+      }));
+    }
+  }
+  report.duration = clock.elapsed();
+  report.max_joint_error = max_joint_error;
+  report.max_tcp_error = max_tcp_error;
+  if (stopped) {
+    report.status = InstructionStatus::kStopped;
+    report.message = "stopped by the operator";
+  }
+  settle(*robot_, dof);
+}
+
+}  // namespace xmate::teach

@@ -1,0 +1,229 @@
+// The pre-flight trace (preflight.h): follows the program with an offline model of the robot,
+// sampling every motion in joint space (MOVEJ) or along its Cartesian path with chained IK
+// (MOVEL/MOVEC), and collects every problem by instruction.
+#include "teach/preflight.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include <xmate/exception.h>
+#include <xmate/model.h>
+
+#include "client/move_check.h"
+#include "model/robot_spec.h"
+#include "planning/cartesian_pose.h"
+#include "teach/program_io.h"
+#include "teach/targets.h"
+
+namespace xmate::teach {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+std::string fmt(const char* format, double a, double b = 0, double c = 0) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, format, a, b, c);
+  return buf;
+}
+
+std::string position(const std::array<double, 3>& p) { return fmt("(%.4f, %.4f, %.4f) m", p[0], p[1], p[2]); }
+
+std::array<double, 3> translation(const std::array<double, 16>& pose) { return {pose[3], pose[7], pose[11]}; }
+
+bool insideBox(const SafetyBox& box, const std::array<double, 3>& p) {
+  const Eigen::Isometry3d frame = planning::poseFromRowMajor(box.frame, "safety box frame");
+  const Eigen::Vector3d local = frame.inverse() * Eigen::Vector3d(p[0], p[1], p[2]);
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(local[i]) > 0.5 * box.size[size_t(i)]) return false;
+  return true;
+}
+
+class Tracer {
+ public:
+  Tracer(const Program& program, const TraceOptions& options)
+      : program_(program), options_(options), spec_(model::robotSpec(program.robot)), model_(program.robot) {
+    model_.SetCoor(options.tool);
+    model_.SetSpeedCheckInterval(0);
+    if (options.has_soft_limits) {
+      std::array<double, 7> up{}, low{};
+      for (int i = 0; i < 7; ++i) {
+        up[i] = options.soft_upper[i] * kDeg;
+        low[i] = options.soft_lower[i] * kDeg;
+      }
+      model_.SetJointLimit(up, low);
+    }
+  }
+
+  ProgramTrace run() {
+    q_ = options_.q_start;
+    for (size_t i = 0; i < program_.instructions.size(); ++i) {
+      index_ = i;
+      current_ = InstructionTrace{};
+      traceOne(program_.instructions[i]);
+      current_.q_end = q_;
+      result_.instructions.push_back(current_);
+    }
+    return result_;
+  }
+
+ private:
+  const Program& program_;
+  const TraceOptions& options_;
+  const model::RobotSpec& spec_;
+  XmateModel model_;
+  std::array<double, 7> q_{};
+  size_t index_ = 0;
+  InstructionTrace current_;
+  ProgramTrace result_;
+
+  void problem(const std::string& what) { result_.problems.push_back({index_, describe(program_, index_) + ": " + what}); }
+
+  void traceOne(const Instruction& in) {
+    try {
+      validateInstruction(in, index_, program_.robot);
+    } catch (const ProgramError& e) {
+      result_.problems.push_back({index_, e.what()});
+      return;
+    }
+    if (in.type == InstructionType::kMoveJ) traceJoint(in);
+    else if (isMotion(in.type)) traceCartesian(in);
+  }
+
+  // Every joint within the hard range, and within the soft limits when given.
+  bool withinLimits(const std::array<double, 7>& q, const char* what) {
+    bool ok = true;
+    for (int j = 0; j < spec_.dof; ++j) {
+      if (q[j] < spec_.q_min[j] || q[j] > spec_.q_max[j]) {
+        problem(std::string(what) + ": joint " + std::to_string(j + 1) + fmt(" at %.4f rad", q[j]) +
+                fmt(" (%.2f deg) is outside its range [%.2f, ", q[j] * kDeg, spec_.q_min[j] * kDeg) +
+                fmt("%.2f] deg; re-teach the waypoint", spec_.q_max[j] * kDeg));
+        ok = false;
+      } else if (options_.has_soft_limits && (q[j] < options_.soft_lower[j] || q[j] > options_.soft_upper[j])) {
+        problem(std::string(what) + ": joint " + std::to_string(j + 1) + fmt(" at %.2f deg", q[j] * kDeg) +
+                fmt(" is outside its soft limits [%.2f, %.2f] deg; re-teach the waypoint or widen the soft limits",
+                    options_.soft_lower[j] * kDeg, options_.soft_upper[j] * kDeg));
+        ok = false;
+      }
+    }
+    return ok;
+  }
+
+  // Box checks of a sampled path: the end first (the taught target), then the way there.
+  void checkBox(const std::vector<std::array<double, 3>>& path) {
+    if (!options_.has_box || path.empty()) return;
+    if (!insideBox(options_.box, path.back())) {
+      problem("the target " + position(path.back()) +
+              " is outside the Cartesian safety box; re-teach it inside the box or enlarge the box");
+      return;
+    }
+    for (size_t k = 0; k < path.size(); ++k)
+      if (!insideBox(options_.box, path[k])) {
+        problem("the path leaves the Cartesian safety box at " + position(path[k]) +
+                fmt(" (%.0f %% of the way); add a waypoint inside the box or use another motion type",
+                    100.0 * double(k) / double(path.size() - 1)));
+        return;
+      }
+  }
+
+  void traceJoint(const Instruction& in) {
+    std::array<double, 7> goal{};
+    const int rc = jointGoal(in.target, model_, q_, goal);
+    if (rc != XmateModel::kIkOk) {
+      problem(std::string("the target pose cannot be reached: ") + client::ikFailureText(rc) + " (IK code " +
+              std::to_string(rc) + "); re-teach it, or give the target's joint angles \"q\"");
+      return;
+    }
+    if (!withinLimits(goal, "the target")) return;
+    double largest = 0;
+    for (int j = 0; j < spec_.dof; ++j) largest = std::max(largest, std::abs(goal[j] - q_[j]));
+    const int samples = std::clamp(int(std::ceil(largest / 0.01)), 2, 1000);
+    for (int k = 0; k <= samples; ++k) {
+      const double s = double(k) / samples;
+      std::array<double, 7> q{};
+      for (int j = 0; j < 7; ++j) q[j] = q_[j] + s * (goal[j] - q_[j]);
+      current_.tcp_path.push_back(translation(model_.GetCartPose(q)));
+    }
+    checkBox(current_.tcp_path);
+    current_.traced = true;
+    q_ = goal;
+  }
+
+  void traceCartesian(const Instruction& in) {
+    planning::CartesianPath path;
+    try {
+      path = cartesianPath(in, model_, q_);
+    } catch (const std::exception& e) {
+      problem(e.what());
+      return;
+    }
+    const int samples = std::clamp(int(std::ceil(path.length / 0.002 + path.rotation_angle / 0.01 +
+                                                 std::abs(path.psi_delta) / 0.01)), 2, 5000);
+    std::array<double, 7> q = q_;
+    for (int k = 0; k <= samples; ++k) {
+      const double u = double(k) / samples;
+      const planning::PathState s = planning::evaluatePath(path, u);
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.linear() = s.rotation;
+      pose.translation() = s.position;
+      std::array<double, 7> next{};
+      const int rc = model_.GetJointPos(planning::poseToRowMajor(pose), s.psi, q, next);
+      if (rc != XmateModel::kIkOk) {
+        problem(fmt("the path cannot be followed at %.0f %% of the way", 100 * u) + ", TCP at " +
+                position({s.position.x(), s.position.y(), s.position.z()}) + ": " + client::ikFailureText(rc) +
+                " (IK code " + std::to_string(rc) + "); re-teach the target or reach it with MOVEJ");
+        return;
+      }
+      q = next;
+      current_.tcp_path.push_back({s.position.x(), s.position.y(), s.position.z()});
+    }
+    checkBox(current_.tcp_path);
+    try {
+      client::planWithinJointLimits(typeName(in.type), path, in.speed * kSpeedShare, model_, q_);
+    } catch (const std::exception& e) {
+      problem(e.what());
+      return;
+    }
+    current_.traced = true;
+    q_ = q;
+  }
+};
+
+}  // namespace
+
+ProgramTrace traceProgram(const Program& program, const TraceOptions& options) {
+  try {
+    return Tracer(program, options).run();
+  } catch (const std::exception& e) {
+    // Bad options (a tool that is not a rigid transform, soft limits outside the joint range).
+    ProgramTrace trace;
+    trace.instructions.resize(program.instructions.size());
+    trace.problems.push_back({0, std::string("the pre-flight cannot start: ") + e.what()});
+    return trace;
+  }
+}
+
+std::vector<Problem> preflight(const Program& program, const TraceOptions& options) {
+  return traceProgram(program, options).problems;
+}
+
+std::vector<std::vector<std::array<double, 3>>> plannedPath(const Program& program,
+                                                            const std::array<double, 7>& q_start,
+                                                            const std::array<double, 16>& tool) {
+  TraceOptions options;
+  options.q_start = q_start;
+  options.tool = tool;
+  std::vector<std::vector<std::array<double, 3>>> paths;
+  for (InstructionTrace& t : traceProgram(program, options).instructions)
+    paths.push_back(t.traced ? std::move(t.tcp_path) : std::vector<std::array<double, 3>>{});
+  return paths;
+}
+
+std::string problemsText(const std::vector<Problem>& problems) {
+  std::string s;
+  for (const Problem& p : problems) s += p.message + "\n";
+  return s;
+}
+
+}  // namespace xmate::teach

@@ -1,0 +1,67 @@
+// Pre-flight of a program (issue 5), before anything moves: follows the program from a start
+// configuration, resolving every target as the executor will, and reports EVERY problem by
+// instruction -- invalid fields, IK reachability, hard and soft joint limits, the Cartesian safety
+// box (targets and sampled paths), degenerate arcs, paths too close to singular poses. The same
+// trace gives the GUI its preview: the TCP polyline of each motion.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "teach/program.h"
+
+namespace xmate::teach {
+
+inline constexpr std::array<double, 16> kIdentityPose{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+// The box the controller keeps the TCP in (Robot::setCartesianLimit): centred on `frame`'s origin,
+// edges of `size` along its axes, base frame.
+struct SafetyBox {
+  std::array<double, 3> size{};                  // m
+  std::array<double, 16> frame = kIdentityPose;  // row-major
+};
+
+struct TraceOptions {
+  std::array<double, 7> q_start{};             // where the robot is when the program starts, rad
+  std::array<double, 16> tool = kIdentityPose;  // TCP in the flange frame (Robot::toolFrame())
+  bool has_soft_limits = false;                 // Robot::setJointLimit's limits, in rad
+  std::array<double, 7> soft_lower{}, soft_upper{};
+  bool has_box = false;
+  SafetyBox box;
+};
+
+struct Problem {
+  size_t instruction = 0;  // 0-based index
+  std::string message;     // starts with "instruction N (TYPE)"
+};
+
+struct InstructionTrace {
+  bool traced = false;                          // a motion that could be followed to its end
+  std::vector<std::array<double, 3>> tcp_path;  // sampled TCP positions along the motion, m
+  std::array<double, 7> q_end{};                // joints after this instruction (rad)
+};
+
+struct ProgramTrace {
+  std::vector<InstructionTrace> instructions;  // one per instruction (non-motions: traced = false)
+  std::vector<Problem> problems;               // in instruction order
+};
+
+// Never throws for a bad program: every problem becomes a Problem. After a motion that cannot be
+// resolved the trace goes on from the last good configuration, so later problems still show.
+ProgramTrace traceProgram(const Program& program, const TraceOptions& options);
+
+// traceProgram(...).problems.
+std::vector<Problem> preflight(const Program& program, const TraceOptions& options);
+
+// For the 3D view: one polyline of TCP positions (m, base frame) per instruction, sampled along each
+// motion from q_start with the given tool; empty for non-motions and for motions that cannot be
+// followed (their problems are in traceProgram()).
+std::vector<std::vector<std::array<double, 3>>> plannedPath(const Program& program,
+                                                            const std::array<double, 7>& q_start,
+                                                            const std::array<double, 16>& tool = kIdentityPose);
+
+// All problems as one text, a line each.
+std::string problemsText(const std::vector<Problem>& problems);
+
+}  // namespace xmate::teach

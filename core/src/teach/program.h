@@ -1,0 +1,58 @@
+// Programs of the teach feature (issue 5): an ordered list of instructions -- MOVEJ / MOVEL / MOVEC
+// to taught targets, WAIT, SET_DO, WAIT_DI -- for one robot model. Plain data; the file format is
+// program_io.h's job, running it executor.h's.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <xmate/rci_types.h>
+#include <xmate/types.h>
+
+namespace xmate::teach {
+
+// A taught position: joint angles, a TCP pose with the arm angle, or both (recording stores both).
+struct Target {
+  bool has_q = false;
+  std::array<double, 7> q{};       // rad; element 6 is 0 on 6-axis models
+  bool has_pose = false;
+  std::array<double, 16> pose{};   // TCP in the base frame, 4x4 row-major, m
+  bool has_psi = false;            // without it a move keeps the arm angle it starts with
+  double psi = 0;                  // arm angle, rad (7-axis; ignored on 6-axis models)
+};
+
+enum class InstructionType { kMoveJ, kMoveL, kMoveC, kWait, kSetDo, kWaitDi };
+
+// "MOVEJ", "MOVEL", "MOVEC", "WAIT", "SET_DO", "WAIT_DI".
+const char* typeName(InstructionType type);
+bool isMotion(InstructionType type);
+
+struct Instruction {
+  InstructionType type = InstructionType::kMoveJ;
+  std::string name;        // optional label ("P1")
+  Target target;           // MOVEJ / MOVEL / MOVEC
+  Target via;              // MOVEC only: the arc passes through it
+  double speed = 0.3;      // motions: speed ratio in (0, 1]
+  int ms = 0;              // WAIT: milliseconds
+  int signal = 0;          // SET_DO: DOSIGNAL index; WAIT_DI: DISIGNAL index (0..5)
+  bool value = false;      // SET_DO level / WAIT_DI expected level
+  int timeout_ms = 0;      // WAIT_DI: give up after this long (> 0)
+};
+
+struct Program {
+  XmateType robot = XMATE7_PRO;
+  std::vector<Instruction> instructions;
+};
+
+inline constexpr int kSignalCount = 6;
+// "DO0_0".."DO1_1" / "DI0_0".."DI1_1" (RCI's DOSIGNAL / DISIGNAL order); index -1 if unknown.
+const char* doName(int index);
+const char* diName(int index);
+int doIndex(const std::string& name);
+int diIndex(const std::string& name);
+
+// "instruction 3 (MOVEL \"P3\")": how messages name an instruction (1-based).
+std::string describe(const Program& program, size_t index);
+
+}  // namespace xmate::teach

@@ -1,0 +1,279 @@
+// Reading and writing programs (program_io.h). Reading is strict: every field is checked for kind,
+// length, finiteness and range, unknown members are refused (a typo must not silently vanish).
+#include "teach/program_io.h"
+
+#include <cmath>
+#include <initializer_list>
+
+#include "model/robot_spec.h"
+#include "planning/cartesian_pose.h"
+#include "teach/atomic_file.h"
+
+namespace xmate::teach {
+namespace {
+
+// Where a problem is: "instruction 3 (MOVEL), field \"target.pose\"" or "field \"robot\"".
+struct Where {
+  std::string prefix;  // "instruction 3 (MOVEL)" or ""
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+    std::string s = prefix.empty() ? "" : prefix + ", ";
+    s += "field \"" + field + "\": " + problem;
+    throw ProgramError(s);
+  }
+};
+
+std::string got(const JsonValue& v) { return std::string("got ") + kindName(v.kind()); }
+
+const JsonValue& require(const JsonValue& object, const std::string& key, const std::string& field, const Where& w) {
+  const JsonValue* v = object.find(key);
+  if (!v) w.fail(field, "missing");
+  return *v;
+}
+
+void refuseUnknown(const JsonValue& object, std::initializer_list<const char*> known, const std::string& field,
+                   const Where& w) {
+  for (const std::string& key : object.keys()) {
+    bool ok = false;
+    std::string list;
+    for (const char* k : known) {
+      ok = ok || key == k;
+      list += (list.empty() ? "" : ", ") + std::string(k);
+    }
+    if (!ok) w.fail(field.empty() ? key : field + "." + key, "unknown member (known here: " + list + ")");
+  }
+}
+
+double finiteNumber(const JsonValue& v, const std::string& field, const Where& w) {
+  if (!v.isNumber()) w.fail(field, "expected a number, " + got(v));
+  if (!std::isfinite(v.asNumber())) w.fail(field, "not a finite number");
+  return v.asNumber();
+}
+
+template <size_t N>
+std::array<double, N> numberArray(const JsonValue& v, const std::string& field, const char* unit, const Where& w) {
+  const std::string expected = "expected an array of " + std::to_string(N) + " numbers (" + unit + ")";
+  if (!v.isArray()) w.fail(field, expected + ", " + got(v));
+  if (v.size() != N) w.fail(field, expected + ", got " + std::to_string(v.size()) + " elements");
+  std::array<double, N> out{};
+  for (size_t i = 0; i < N; ++i) out[i] = finiteNumber(v.at(i), field + "[" + std::to_string(i) + "]", w);
+  return out;
+}
+
+int integerIn(const JsonValue& v, const std::string& field, long lo, long hi, const Where& w) {
+  const double d = finiteNumber(v, field, w);
+  if (d != std::floor(d) || d < double(lo) || d > double(hi))
+    w.fail(field, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                      std::to_string(d));
+  return int(d);
+}
+
+bool boolean(const JsonValue& v, const std::string& field, const Where& w) {
+  if (!v.isBool()) w.fail(field, "expected true or false, " + got(v));
+  return v.asBool();
+}
+
+Target targetFrom(const JsonValue& v, const std::string& field, const model::RobotSpec& spec, const Where& w) {
+  if (!v.isObject()) w.fail(field, "expected an object with \"q\" and/or \"pose\" + \"psi\", " + got(v));
+  refuseUnknown(v, {"q", "pose", "psi"}, field, w);
+  Target t;
+  if (const JsonValue* q = v.find("q")) {
+    t.q = numberArray<7>(*q, field + ".q", "joint angles in rad", w);
+    t.has_q = true;
+    if (spec.dof == 6 && t.q[6] != 0) w.fail(field + ".q[6]", "must be 0 on the 6-axis " + std::string(spec.display_name));
+  }
+  if (const JsonValue* pose = v.find("pose")) {
+    t.pose = numberArray<16>(*pose, field + ".pose", "4x4 row-major homogeneous transform, m", w);
+    t.has_pose = true;
+    try {
+      planning::poseFromRowMajor(t.pose, "pose");
+    } catch (const std::invalid_argument& e) {
+      w.fail(field + ".pose", std::string("not a homogeneous transform: ") + e.what());
+    }
+  }
+  if (const JsonValue* psi = v.find("psi")) {
+    if (!t.has_pose) w.fail(field + ".psi", "an arm angle needs a \"pose\" beside it");
+    t.psi = finiteNumber(*psi, field + ".psi", w);
+    t.has_psi = true;
+  }
+  if (!t.has_q && !t.has_pose) w.fail(field, "needs \"q\" (7 joint angles) or \"pose\" (16 numbers) + \"psi\"");
+  return t;
+}
+
+double speedFrom(const JsonValue& in, const Where& w) {
+  const double s = finiteNumber(require(in, "speed", "speed", w), "speed", w);
+  if (!(s > 0 && s <= 1)) w.fail("speed", "expected a speed ratio in (0, 1], got " + std::to_string(s));
+  return s;
+}
+
+InstructionType typeFrom(const JsonValue& v, const Where& w) {
+  if (!v.isString()) w.fail("type", "expected a string, " + got(v));
+  for (InstructionType t : {InstructionType::kMoveJ, InstructionType::kMoveL, InstructionType::kMoveC,
+                            InstructionType::kWait, InstructionType::kSetDo, InstructionType::kWaitDi})
+    if (v.asString() == typeName(t)) return t;
+  w.fail("type", "unknown instruction type \"" + v.asString() + "\" (known: MOVEJ, MOVEL, MOVEC, WAIT, SET_DO, WAIT_DI)");
+}
+
+int signalFrom(const JsonValue& in, bool output, const Where& w) {
+  const JsonValue& v = require(in, "signal", "signal", w);
+  if (!v.isString()) w.fail("signal", "expected a string, " + got(v));
+  const int index = output ? doIndex(v.asString()) : diIndex(v.asString());
+  if (index < 0)
+    w.fail("signal", "unknown signal \"" + v.asString() + "\" (known: " +
+                         (output ? "DO0_0, DO0_1, DO0_2, DO0_3, DO1_0, DO1_1" : "DI0_0, DI0_1, DI0_2, DI0_3, DI1_0, DI1_1") +
+                         ")");
+  return index;
+}
+
+Instruction instructionFrom(const JsonValue& in, size_t index, const model::RobotSpec& spec) {
+  Where w{"instruction " + std::to_string(index + 1)};
+  if (!in.isObject()) w.fail("", "expected an object, " + got(in));
+  Instruction out;
+  out.type = typeFrom(require(in, "type", "type", w), w);
+  w.prefix += std::string(" (") + typeName(out.type) + ")";
+  if (const JsonValue* name = in.find("name")) {
+    if (!name->isString()) w.fail("name", "expected a string, " + got(*name));
+    out.name = name->asString();
+  }
+  switch (out.type) {
+    case InstructionType::kMoveJ:
+    case InstructionType::kMoveL:
+      refuseUnknown(in, {"type", "name", "target", "speed"}, "", w);
+      out.target = targetFrom(require(in, "target", "target", w), "target", spec, w);
+      out.speed = speedFrom(in, w);
+      break;
+    case InstructionType::kMoveC:
+      refuseUnknown(in, {"type", "name", "via", "target", "speed"}, "", w);
+      out.via = targetFrom(require(in, "via", "via", w), "via", spec, w);
+      out.target = targetFrom(require(in, "target", "target", w), "target", spec, w);
+      out.speed = speedFrom(in, w);
+      break;
+    case InstructionType::kWait:
+      refuseUnknown(in, {"type", "name", "ms"}, "", w);
+      out.ms = integerIn(require(in, "ms", "ms", w), "ms", 0, 3'600'000, w);
+      break;
+    case InstructionType::kSetDo:
+      refuseUnknown(in, {"type", "name", "signal", "value"}, "", w);
+      out.signal = signalFrom(in, true, w);
+      out.value = boolean(require(in, "value", "value", w), "value", w);
+      break;
+    case InstructionType::kWaitDi:
+      refuseUnknown(in, {"type", "name", "signal", "value", "timeout_ms"}, "", w);
+      out.signal = signalFrom(in, false, w);
+      out.value = boolean(require(in, "value", "value", w), "value", w);
+      out.timeout_ms = integerIn(require(in, "timeout_ms", "timeout_ms", w), "timeout_ms", 1, 3'600'000, w);
+      break;
+  }
+  return out;
+}
+
+JsonValue targetToJson(const Target& t) {
+  JsonValue v = JsonValue::object();
+  if (t.has_q) v.set("q", JsonValue::numbers(t.q.data(), t.q.size()));
+  if (t.has_pose) v.set("pose", JsonValue::numbers(t.pose.data(), t.pose.size()));
+  if (t.has_pose && t.has_psi) v.set("psi", JsonValue::number(t.psi));
+  return v;
+}
+
+JsonValue instructionToJson(const Instruction& in) {
+  JsonValue v = JsonValue::object();
+  v.set("type", JsonValue::string(typeName(in.type)));
+  if (!in.name.empty()) v.set("name", JsonValue::string(in.name));
+  switch (in.type) {
+    case InstructionType::kMoveC:
+      v.set("via", targetToJson(in.via));
+      [[fallthrough]];
+    case InstructionType::kMoveJ:
+    case InstructionType::kMoveL:
+      v.set("target", targetToJson(in.target));
+      v.set("speed", JsonValue::number(in.speed));
+      break;
+    case InstructionType::kWait:
+      v.set("ms", JsonValue::number(in.ms));
+      break;
+    case InstructionType::kSetDo:
+      v.set("signal", JsonValue::string(doName(in.signal)));
+      v.set("value", JsonValue::boolean(in.value));
+      break;
+    case InstructionType::kWaitDi:
+      v.set("signal", JsonValue::string(diName(in.signal)));
+      v.set("value", JsonValue::boolean(in.value));
+      v.set("timeout_ms", JsonValue::number(in.timeout_ms));
+      break;
+  }
+  return v;
+}
+
+}  // namespace
+
+Program programFromJson(const JsonValue& doc) {
+  const Where w;
+  if (!doc.isObject()) throw ProgramError("a program is a JSON object with \"format\": \"rci-program\", " + got(doc));
+  const JsonValue& format = require(doc, "format", "format", w);
+  if (!format.isString() || format.asString() != kProgramFormat)
+    w.fail("format", std::string("expected \"") + kProgramFormat + "\" (this is not an RCI Studio program)");
+  const JsonValue& version = require(doc, "version", "version", w);
+  if (!version.isNumber() || version.asNumber() != kProgramVersion)
+    w.fail("version", "unsupported version (this RCI Studio reads version " + std::to_string(kProgramVersion) +
+                          "); save the program again with a matching RCI Studio");
+  refuseUnknown(doc, {"format", "version", "robot", "instructions"}, "", w);
+  const JsonValue& robot = require(doc, "robot", "robot", w);
+  if (!robot.isString()) w.fail("robot", "expected a model name string, " + got(robot));
+  const model::RobotSpec* spec = model::findRobotSpec(robot.asString());
+  if (!spec) w.fail("robot", "unknown model \"" + robot.asString() + "\" (known: xmate3_pro, xmate7_pro, xmate3, xmate7)");
+  const JsonValue& list = require(doc, "instructions", "instructions", w);
+  if (!list.isArray()) w.fail("instructions", "expected an array, " + got(list));
+  Program p;
+  p.robot = spec->type;
+  for (size_t i = 0; i < list.size(); ++i) p.instructions.push_back(instructionFrom(list.at(i), i, *spec));
+  return p;
+}
+
+JsonValue programToJson(const Program& program) {
+  JsonValue doc = JsonValue::object();
+  doc.set("format", JsonValue::string(kProgramFormat));
+  doc.set("version", JsonValue::number(kProgramVersion));
+  doc.set("robot", JsonValue::string(std::string(model::robotSpec(program.robot).name)));
+  JsonValue list = JsonValue::array();
+  for (const Instruction& in : program.instructions) list.push(instructionToJson(in));
+  doc.set("instructions", std::move(list));
+  return doc;
+}
+
+Program parseProgram(const std::string& text) {
+  JsonValue doc;
+  try {
+    doc = parseJson(text);
+  } catch (const JsonError& e) {
+    throw ProgramError(std::string("not valid JSON: ") + e.what());
+  }
+  return programFromJson(doc);
+}
+
+std::string programText(const Program& program) { return writeJson(programToJson(program)); }
+
+Program loadProgram(const std::string& path) {
+  const std::string text = readFile(path);
+  try {
+    return parseProgram(text);
+  } catch (const ProgramError& e) {
+    throw ProgramError(path + ": " + e.what());
+  }
+}
+
+void saveProgram(const std::string& path, const Program& program) { writeFileAtomically(path, programText(program)); }
+
+void validateInstruction(const Instruction& instruction, size_t index, XmateType robot) {
+  instructionFrom(instructionToJson(instruction), index, model::robotSpec(robot));
+}
+
+void requireRobot(const Program& program, XmateType type) {
+  if (program.robot == type) return;
+  const auto& want = model::robotSpec(program.robot);
+  const auto& have = model::robotSpec(type);
+  throw ProgramError("the program was taught for the " + std::string(want.display_name) + " (" +
+                     std::string(want.name) + ") but the robot is the " + std::string(have.display_name) + " (" +
+                     std::string(have.name) + "); poses and joint angles do not carry over -- teach it again on "
+                     "this robot or connect the right one");
+}
+
+}  // namespace xmate::teach

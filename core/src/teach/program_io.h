@@ -1,0 +1,45 @@
+// The program file format (docs/teach.md): JSON with "format": "rci-program", "version": 1, the
+// robot model and the instructions. Loading checks everything and names the instruction (number
+// and type) and the field of the first problem; saving is atomic.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "teach/json.h"
+#include "teach/program.h"
+
+namespace xmate::teach {
+
+// A file that is not a valid program; what() says where (line:column, or instruction and field),
+// what was found and what is expected.
+class ProgramError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+inline constexpr const char* kProgramFormat = "rci-program";
+inline constexpr int kProgramVersion = 1;
+
+Program programFromJson(const JsonValue& document);
+JsonValue programToJson(const Program& program);
+
+// Text <-> program. parseProgram throws ProgramError (JSON syntax errors included).
+Program parseProgram(const std::string& text);
+std::string programText(const Program& program);
+
+// Files. loadProgram throws ProgramError for bad contents, std::runtime_error when the file cannot
+// be read; the message starts with the path. saveProgram writes atomically (atomic_file.h) and
+// throws std::runtime_error, leaving the old file, on failure.
+Program loadProgram(const std::string& path);
+void saveProgram(const std::string& path, const Program& program);
+
+// Checks one instruction as loading would (kinds, ranges, finiteness, homogeneous poses); throws
+// ProgramError naming it as instruction index + 1. For programs built in memory (the GUI).
+void validateInstruction(const Instruction& instruction, size_t index, XmateType robot);
+
+// Throws ProgramError unless the program was taught for `type` ("the program is for xMate Pro 7,
+// the robot is an xMate 3: ...").
+void requireRobot(const Program& program, XmateType type);
+
+}  // namespace xmate::teach

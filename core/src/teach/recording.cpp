@@ -1,0 +1,46 @@
+// Recording helpers (recording.h).
+#include "teach/recording.h"
+
+#include "model/robot_spec.h"
+
+namespace xmate::teach {
+
+Target targetFromState(const RCI::robot::RobotState& state, XmateType type) {
+  const bool six_axis = model::robotSpec(type).dof == 6;
+  Target t;
+  t.has_q = true;
+  t.q = state.q;
+  if (six_axis) t.q[6] = 0;
+  t.has_pose = true;
+  t.pose = state.toolTobase_pos_m;
+  t.has_psi = true;
+  t.psi = six_axis ? 0.0 : state.psi_m;
+  return t;
+}
+
+namespace {
+Instruction motion(InstructionType type, const Target& target, double speed, std::string name) {
+  Instruction in;
+  in.type = type;
+  in.target = target;
+  in.speed = speed;
+  in.name = std::move(name);
+  return in;
+}
+}  // namespace
+
+Instruction moveJ(const Target& target, double speed, std::string name) {
+  return motion(InstructionType::kMoveJ, target, speed, std::move(name));
+}
+
+Instruction moveL(const Target& target, double speed, std::string name) {
+  return motion(InstructionType::kMoveL, target, speed, std::move(name));
+}
+
+Instruction moveC(const Target& via, const Target& target, double speed, std::string name) {
+  Instruction in = motion(InstructionType::kMoveC, target, speed, std::move(name));
+  in.via = via;
+  return in;
+}
+
+}  // namespace xmate::teach

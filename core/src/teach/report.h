@@ -1,0 +1,21 @@
+// The run report as JSON (docs/teach.md, "Report"): the outcome, the failing instruction, the
+// pre-flight problems, and per instruction its status, reached q and pose, duration and maximum
+// tracking error. rci-cli run --report writes it; the GUI can save it the same way.
+#pragma once
+
+#include <string>
+
+#include "teach/executor.h"
+#include "teach/json.h"
+#include "teach/program.h"
+
+namespace xmate::teach {
+
+inline constexpr const char* kReportFormat = "rci-run-report";
+
+JsonValue reportToJson(const Program& program, const RunReport& report);
+
+// Writes the report atomically (atomic_file.h); std::runtime_error on failure.
+void saveReport(const std::string& path, const Program& program, const RunReport& report);
+
+}  // namespace xmate::teach

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# test_cli_run: `rci-cli run` on the example program against the in-process simulator exits 0 and
+# writes a finished report; a usage error exits 2; a program refused by the pre-flight exits 1
+# without moving. Arguments: RCI_CLI EXAMPLE_PROGRAM WORK_DIR.
+set -u
+cli=$1 example=$2 work=$3
+report=$work/cli_run_report.json
+rm -f "$report"
+
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$cli" run "$example" --robot sim --speed 0.8 --report "$report" || fail "run of the example exited $?"
+test -s "$report" || fail "no report at $report"
+grep -q '"outcome": "finished"' "$report" || fail "report outcome is not finished: $(head -c 400 "$report")"
+n=$(grep -c '"status": "done"' "$report")
+[ "$n" -eq 7 ] || fail "expected 7 instructions done, found $n"
+grep -q '"max_tcp_error_m"' "$report" || fail "report has no tracking error"
+
+"$cli" run "$example" --robot sim --speed 3 >/dev/null 2>&1
+[ $? -eq 2 ] || fail "--speed 3 should be a usage error (exit 2)"
+"$cli" run --robot sim >/dev/null 2>&1
+[ $? -eq 2 ] || fail "a missing program should be a usage error (exit 2)"
+
+# Instruction 2 is 3 m away: refused before anything moves, exit 1, naming the instruction.
+bad=$work/cli_unreachable.json
+sed 's/0.2251315872475988,/3.0,/' "$example" > "$bad"
+grep -q '3.0,' "$bad" || fail "could not build the unreachable program"
+out=$("$cli" run "$bad" --robot sim --report "$report" 2>&1)
+[ $? -eq 1 ] || fail "an unreachable program should exit 1; output: $out"
+echo "$out" | grep -q 'instruction 2 (MOVEL "P2")' || fail "the refusal does not name instruction 2: $out"
+grep -q '"outcome": "refused"' "$report" || fail "report of the refused run is not 'refused'"
+echo "3 passed, 0 failed"

@@ -1,0 +1,442 @@
+// The executor end to end against the lock-step simulator over loopback: teach four waypoints by
+// dragging the arm with injected forces (J, L, C via + target), save, reload and replay them to
+// within 1e-4 rad / 0.1 mm with no error bit; pause and resume mid-move (the arm stops on its path
+// without tripping a limit, then finishes at the target); stop; speed override; single step;
+// programs refused by the pre-flight move nothing; a controller error (e-stop) and a DI timeout
+// abort naming the instruction.
+#include <QtTest>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include <xmate/model.h>
+#include <xmate/robot.h>
+
+#include "client_test_support.h"
+#include "teach/executor.h"
+#include "teach/program_io.h"
+#include "teach/recording.h"
+
+using namespace xmate;
+using namespace xmate::teach;
+using namespace client_test;
+
+namespace {
+
+constexpr double kJointTolerance = 1e-4;     // rad
+constexpr double kPositionTolerance = 1e-4;  // m
+
+double distance(const std::array<double, 16>& a, const std::array<double, 16>& b) {
+  return std::sqrt(std::pow(a[3] - b[3], 2) + std::pow(a[7] - b[7], 2) + std::pow(a[11] - b[11], 2));
+}
+
+bool anyError(const RCI::robot::RobotState& s) {
+  for (bool e : s.errors)
+    if (e) return true;
+  return false;
+}
+
+// Pushes the TCP with `force` (N, base frame) while dragging until it has moved `metres`, lets go,
+// waits until the arm is at rest and returns the state there.
+RCI::robot::RobotState dragBy(sim::Server& server, Robot& robot, const std::array<double, 3>& force, double metres) {
+  const auto start = robot.receiveRobotState().toolTobase_pos_m;
+  server.setExternalWrench({force[0], force[1], force[2], 0, 0, 0});
+  const bool moved = eventually([&] { return distance(robot.receiveRobotState().toolTobase_pos_m, start) > metres; });
+  server.setExternalWrench({0, 0, 0, 0, 0, 0});
+  if (!moved) return {};
+  eventually([&] {
+    const auto s = robot.receiveRobotState();
+    double speed = 0;
+    for (double v : s.dq_m) speed = std::max(speed, std::abs(v));
+    return speed < 1e-5;
+  });
+  return robot.receiveRobotState();
+}
+
+Instruction waitDi(int signal, bool value, int timeout_ms) {
+  Instruction in;
+  in.type = InstructionType::kWaitDi;
+  in.signal = signal;
+  in.value = value;
+  in.timeout_ms = timeout_ms;
+  return in;
+}
+
+Target jointTarget(std::array<double, 7> q) {
+  Target t;
+  t.has_q = true;
+  t.q = q;
+  return t;
+}
+
+// A long single-joint MOVEJ from the robot's position (joint 1 unless told).
+Program longMove(Robot& robot, double delta, double speed, int joint = 0) {
+  std::array<double, 7> q = robot.receiveRobotState().q;
+  q[joint] += delta;
+  Program p;
+  p.instructions.push_back(moveJ(jointTarget(q), speed, "far"));
+  return p;
+}
+
+// Runs `action` on its own thread once the executor's progress satisfies `when`.
+class WhenProgress {
+ public:
+  WhenProgress(Executor& executor, std::function<bool(const Progress&)> when, std::function<void()> action)
+      : thread_([&executor, when = std::move(when), action = std::move(action)] {
+          // Polls tightly: in lock-step the simulator runs faster than real time.
+          // The progress of an earlier run on the same executor does not count: wait for this one.
+          const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+          bool begun = false;
+          while (std::chrono::steady_clock::now() < end) {
+            const Progress p = executor.progress();
+            const bool over = p.state == RunState::kFinished || p.state == RunState::kFailed ||
+                              p.state == RunState::kRefused || p.state == RunState::kStopped;
+            begun = begun || (!over && p.state != RunState::kIdle);
+            if (begun && when(p)) {
+              action();
+              return;
+            }
+            if (begun && over) return;
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+          }
+        }) {}
+  ~WhenProgress() { thread_.join(); }
+
+ private:
+  std::thread thread_;
+};
+
+}  // namespace
+
+class TestExecutor : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void teachByDraggingAndReplay();
+  void pauseAndResumeMidMove();
+  void stopEndsSmoothly();
+  void speedOverrideSlowsTheMotion();
+  void singleStepPausesAfterEachInstruction();
+  void unreachableProgramIsRefusedBeforeMoving();
+  void outOfBoxProgramIsRefusedBeforeMoving();
+  void controllerErrorAbortsNamingTheInstruction();
+  void waitDiTimesOutNamingTheInstruction();
+  void ioInstructions();
+  void poseTargetsOnASixAxisArm();
+};
+
+void TestExecutor::teachByDraggingAndReplay() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  QVERIFY(robot->setMotorPower(1));
+  whenReady([&] { robot->startDrag(2, 1); });  // Cartesian, translation only
+  QVERIFY(eventually([&] { return server->status().sim.dragging; }));
+
+  // Four waypoints, each pulled a few centimetres in another direction.
+  const auto wp1 = dragBy(*server, *robot, {0, 25, 0}, 0.05);
+  const auto wp2 = dragBy(*server, *robot, {0, 0, -25}, 0.05);
+  const auto via = dragBy(*server, *robot, {25, 0, 0}, 0.04);
+  const auto wp4 = dragBy(*server, *robot, {0, -25, 0}, 0.04);
+  for (const auto* s : {&wp1, &wp2, &via, &wp4}) QVERIFY2(s->message_id != 0, "the arm did not follow the push");
+  robot->stopDrag();
+  QVERIFY(eventually([&] { return !server->status().sim.dragging; }));
+
+  Program taught;
+  taught.robot = XMATE7_PRO;
+  taught.instructions.push_back(moveJ(targetFromState(wp1, XMATE7_PRO), 0.5, "J1"));
+  taught.instructions.push_back(moveL(targetFromState(wp2, XMATE7_PRO), 0.5, "L2"));
+  taught.instructions.push_back(moveC(targetFromState(via, XMATE7_PRO), targetFromState(wp4, XMATE7_PRO), 0.5, "C3"));
+  QTemporaryDir dir;
+  const std::string path = (dir.path() + "/taught.json").toStdString();
+  saveProgram(path, taught);
+  const Program program = loadProgram(path);
+
+  Executor executor;
+  std::vector<size_t> done;
+  ExecutorOptions options;
+  options.on_done = [&](size_t i, const InstructionReport&) { done.push_back(i); };
+  const RunReport report = executor.run(*robot, program, options);
+  QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  QCOMPARE(done, (std::vector<size_t>{0, 1, 2}));
+  QCOMPARE(executor.progress().state, RunState::kFinished);
+
+  const RunReport& r = report;
+  QVERIFY(maxAbsDiff(r.instructions[0].q, wp1.q) < kJointTolerance);
+  QVERIFY(distance(r.instructions[0].pose, wp1.toolTobase_pos_m) < kPositionTolerance);
+  QVERIFY(distance(r.instructions[1].pose, wp2.toolTobase_pos_m) < kPositionTolerance);
+  QVERIFY(distance(r.instructions[2].pose, wp4.toolTobase_pos_m) < kPositionTolerance);
+  for (const InstructionReport& i : r.instructions) {
+    QCOMPARE(i.status, InstructionStatus::kDone);
+    QVERIFY(i.duration > 0);
+    QVERIFY(i.max_joint_error > 0 && i.max_joint_error < 0.01);
+    QVERIFY(i.max_tcp_error > 0 && i.max_tcp_error < 0.005);
+  }
+  QVERIFY(!anyError(robot->receiveRobotState()));
+}
+
+void TestExecutor::pauseAndResumeMidMove() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  // Full speed on J2, whose velocity limit is the largest against its acceleration limit: the
+  // hardest case for a ramp that must stay within the acceleration limits. First to J2 = +1.9 rad,
+  // then the long move to -1.9 rad, paused on the way.
+  Program program = longMove(*robot, 1.9 - robot->receiveRobotState().q[1], 1.0, 1);
+  std::array<double, 7> goal = program.instructions[0].target.q;
+  goal[1] = -1.9;
+  program.instructions.push_back(moveJ(jointTarget(goal), 1.0, "across"));
+  Executor executor;
+  double paused_at = -1, fraction_later = -1;
+  std::array<double, 7> q_paused{}, q_later{};
+  {
+    WhenProgress pauser(executor,
+                        [](const Progress& p) {
+                          return p.instruction == 1 && p.state == RunState::kRunning && p.fraction > 0.15;
+                        },
+                        [&] {
+                          executor.pause();
+                          if (!eventually([&] { return executor.progress().state == RunState::kPaused; })) return;
+                          paused_at = executor.progress().fraction;
+                          q_paused = robot->receiveRobotState().q;
+                          std::this_thread::sleep_for(std::chrono::milliseconds(150));
+                          q_later = robot->receiveRobotState().q;
+                          fraction_later = executor.progress().fraction;
+                          executor.resume();
+                        });
+    const RunReport report = executor.run(*robot, program);
+    QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  }
+  QVERIFY2(paused_at > 0.15 && paused_at < 0.95, qPrintable(QString::number(paused_at)));
+  QCOMPARE(fraction_later, paused_at);  // plan time stood still while paused
+  // Held still on the path while paused (between the start and the goal, on joint 2 only).
+  QVERIFY(maxAbsDiff(q_paused, q_later) < 1e-5);
+  QVERIFY(std::abs(q_paused[0] - goal[0]) < 1e-3);
+  QVERIFY(q_paused[1] > goal[1] + 0.1 && q_paused[1] < 1.9 - 0.1);
+  QVERIFY(maxAbsDiff(robot->receiveRobotState().q, goal) < kJointTolerance);
+  QVERIFY(!anyError(robot->receiveRobotState()));
+}
+
+void TestExecutor::stopEndsSmoothly() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  Program program = longMove(*robot, 2.5, 0.8);
+  program.instructions.push_back(program.instructions[0]);
+  const double start = robot->receiveRobotState().q[0];
+  Executor executor;
+  RunReport report;
+  {
+    WhenProgress stopper(executor, [](const Progress& p) { return p.fraction > 0.2; }, [&] { executor.stop(); });
+    report = executor.run(*robot, program);
+  }
+  QCOMPARE(report.outcome, RunState::kStopped);
+  QCOMPARE(report.instructions[0].status, InstructionStatus::kStopped);
+  QCOMPARE(report.instructions[1].status, InstructionStatus::kNotRun);
+  const double reached = robot->receiveRobotState().q[0];
+  QVERIFY(reached > start + 0.1 && reached < start + 2.45);  // stopped on the way
+  QVERIFY(!anyError(robot->receiveRobotState()));
+}
+
+void TestExecutor::speedOverrideSlowsTheMotion() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  Executor executor;
+  const RunReport full = executor.run(*robot, longMove(*robot, 0.5, 0.5));
+  QCOMPARE(full.outcome, RunState::kFinished);
+  ExecutorOptions half;
+  half.speed_override = 0.5;
+  const RunReport slow = executor.run(*robot, longMove(*robot, -0.5, 0.5), half);
+  QCOMPARE(slow.outcome, RunState::kFinished);
+  // Controller time (cycles), not wall time: twice as long at half the override.
+  QVERIFY2(std::abs(slow.instructions[0].duration / full.instructions[0].duration - 2.0) < 0.05,
+           qPrintable(QString("%1 vs %2 s").arg(slow.instructions[0].duration).arg(full.instructions[0].duration)));
+  // Changed while running: ramps down from 100 % to 20 % mid-move, still finishes at the target.
+  const Program program = longMove(*robot, 0.8, 0.8);
+  {
+    WhenProgress slower(executor, [](const Progress& p) { return p.fraction > 0.2; },
+                        [&] { executor.setSpeedOverride(0.2); });
+    const RunReport changed = executor.run(*robot, program);
+    QCOMPARE(changed.outcome, RunState::kFinished);
+  }
+  QCOMPARE(executor.progress().speed_override, 0.2);
+  QVERIFY(maxAbsDiff(robot->receiveRobotState().q, program.instructions[0].target.q) < kJointTolerance);
+  executor.setSpeedOverride(5);
+  QCOMPARE(executor.progress().speed_override, 1.0);
+  executor.setSpeedOverride(0.01);
+  QCOMPARE(executor.progress().speed_override, 0.1);
+  QVERIFY(!anyError(robot->receiveRobotState()));
+}
+
+void TestExecutor::singleStepPausesAfterEachInstruction() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  Program program = longMove(*robot, 0.2, 0.8);
+  Target back = jointTarget(robot->receiveRobotState().q);
+  program.instructions.push_back(moveJ(back, 0.8, "back"));
+  Executor executor;
+  ExecutorOptions options;
+  options.single_step = true;
+  RunReport report;
+  bool saw_pause = false;
+  {
+    WhenProgress stepper(executor, [](const Progress& p) { return p.state == RunState::kPaused && p.instruction == 0; },
+                         [&] {
+                           saw_pause = true;
+                           executor.resume();
+                         });
+    report = executor.run(*robot, program, options);
+  }
+  QVERIFY(saw_pause);
+  QCOMPARE(report.outcome, RunState::kFinished);
+  QVERIFY(maxAbsDiff(robot->receiveRobotState().q, back.q) < kJointTolerance);
+}
+
+void TestExecutor::unreachableProgramIsRefusedBeforeMoving() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  const auto before = robot->receiveRobotState();
+  Program program;
+  Target near = targetFromState(before, XMATE7_PRO);
+  near.has_q = false;
+  near.pose[11] -= 0.05;
+  Target far = near;
+  far.pose[3] += 1.5;
+  program.instructions.push_back(moveL(near, 0.3, "near"));
+  program.instructions.push_back(moveL(far, 0.3, "far"));
+  program.instructions.push_back(moveL(near, 0.3, "back"));
+  program.instructions.push_back(moveJ(far, 0.3, "far again"));
+  Executor executor;
+  const RunReport report = executor.run(*robot, program);
+  QCOMPARE(report.outcome, RunState::kRefused);
+  QCOMPARE(report.problems.size(), size_t(2));
+  QCOMPARE(report.problems[0].instruction, size_t(1));
+  QCOMPARE(report.problems[1].instruction, size_t(3));
+  QVERIFY2(QString::fromStdString(report.message).contains("instruction 2 (MOVEL \"far\")"), report.message.c_str());
+  QVERIFY2(QString::fromStdString(report.message).contains("instruction 4 (MOVEJ \"far again\")"), report.message.c_str());
+  QCOMPARE(server->status().counters.commands_received, uint64_t(0));  // nothing was streamed
+  QVERIFY(maxAbsDiff(robot->receiveRobotState().q, before.q) < 1e-9);
+  for (const InstructionReport& r : report.instructions) QCOMPARE(r.status, InstructionStatus::kNotRun);
+}
+
+void TestExecutor::outOfBoxProgramIsRefusedBeforeMoving() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  const auto before = robot->receiveRobotState();
+  ExecutorOptions options;
+  options.has_box = true;
+  options.box.size = {0.4, 0.4, 0.4};
+  options.box.frame = kIdentityPose;
+  options.box.frame[3] = before.toolTobase_pos_m[3];
+  options.box.frame[7] = before.toolTobase_pos_m[7];
+  options.box.frame[11] = before.toolTobase_pos_m[11];
+  Target inside = targetFromState(before, XMATE7_PRO);
+  inside.has_q = false;
+  inside.pose[11] -= 0.1;
+  Target outside = inside;
+  outside.pose[7] += 0.3;
+  Program program;
+  program.instructions.push_back(moveL(inside, 0.3));
+  program.instructions.push_back(moveL(outside, 0.3));
+  Executor executor;
+  const RunReport report = executor.run(*robot, program, options);
+  QCOMPARE(report.outcome, RunState::kRefused);
+  QCOMPARE(report.problems.size(), size_t(1));
+  QVERIFY2(QString::fromStdString(report.problems[0].message).contains("instruction 2 (MOVEL): the target") &&
+               QString::fromStdString(report.problems[0].message).contains("outside the Cartesian safety box"),
+           report.problems[0].message.c_str());
+  QCOMPARE(server->status().counters.commands_received, uint64_t(0));
+}
+
+void TestExecutor::controllerErrorAbortsNamingTheInstruction() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  Program program;
+  program.instructions.push_back(waitDi(0, false, 100));  // DI0_0 is low: passes at once
+  const Program move = longMove(*robot, 2.0, 0.5);
+  program.instructions.push_back(move.instructions[0]);
+  Executor executor;
+  RunReport report;
+  {
+    WhenProgress estop(executor, [](const Progress& p) { return p.instruction == 1 && p.fraction > 0.2; },
+                       [&] { server->setEmergencyStop(true); });
+    report = executor.run(*robot, program);
+  }
+  QCOMPARE(report.outcome, RunState::kFailed);
+  QCOMPARE(report.failed_instruction, 1L);
+  QCOMPARE(report.instructions[0].status, InstructionStatus::kDone);
+  QCOMPARE(report.instructions[1].status, InstructionStatus::kFailed);
+  QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 2 (MOVEJ \"far\"): the controller aborted"),
+           report.message.c_str());
+  QCOMPARE(executor.progress().state, RunState::kFailed);
+}
+
+void TestExecutor::waitDiTimesOutNamingTheInstruction() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  Program program;
+  program.instructions.push_back(waitDi(2, true, 50));
+  Executor executor;
+  const RunReport report = executor.run(*robot, program);
+  QCOMPARE(report.outcome, RunState::kFailed);
+  QVERIFY2(report.message == "instruction 1 (WAIT_DI): DI0_2 did not become true within 50 ms; check the sensor and "
+                             "its wiring, or raise timeout_ms",
+           report.message.c_str());
+}
+
+void TestExecutor::ioInstructions() {
+  SimOptions o;
+  o.loopback_io = true;  // DO k drives DI k
+  auto server = startSim(o);
+  auto robot = robotFor(*server);
+  Program program;
+  Instruction set;
+  set.type = InstructionType::kSetDo;
+  set.signal = 3;
+  set.value = true;
+  program.instructions.push_back(set);
+  program.instructions.push_back(waitDi(3, true, 2000));
+  Instruction wait;
+  wait.type = InstructionType::kWait;
+  wait.ms = 20;
+  program.instructions.push_back(wait);
+  Executor executor;
+  const RunReport report = executor.run(*robot, program);
+  QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  QVERIFY(robot->getDI(RCI::robot::DISIGNAL::DI0_3));
+  QVERIFY(report.instructions[2].duration >= 0.02);
+}
+
+void TestExecutor::poseTargetsOnASixAxisArm() {
+  SimOptions o;
+  o.type = XMATE7;
+  auto server = startSim(o);
+  auto robot = robotFor(*server, XMATE7);
+  const auto start = robot->receiveRobotState();
+  Target down = targetFromState(start, XMATE7);
+  down.has_q = false;  // MOVEJ by IK of the pose
+  down.pose[11] -= 0.08;
+  Target side = down;
+  side.pose[7] += 0.06;
+  Target via = down;
+  via.pose[3] += 0.03;
+  via.pose[7] += 0.03;
+  Program program;
+  program.robot = XMATE7;
+  program.instructions.push_back(moveJ(down, 0.5, "down"));
+  program.instructions.push_back(moveL(side, 0.5, "side"));
+  program.instructions.push_back(moveC(via, down, 0.5, "arc back"));
+  Executor executor;
+  const RunReport report = executor.run(*robot, program);
+  QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  QVERIFY(distance(report.instructions[0].pose, down.pose) < kPositionTolerance);
+  QVERIFY(distance(report.instructions[1].pose, side.pose) < kPositionTolerance);
+  QVERIFY(distance(report.instructions[2].pose, down.pose) < kPositionTolerance);
+  QCOMPARE(robot->receiveRobotState().q_c[6], 0.0);
+  // A program taught on another model is refused.
+  program.robot = XMATE7_PRO;
+  const RunReport wrong = executor.run(*robot, program);
+  QCOMPARE(wrong.outcome, RunState::kRefused);
+  QVERIFY2(QString::fromStdString(wrong.message).contains("taught for the xMate Pro 7"), wrong.message.c_str());
+}
+
+QTEST_GUILESS_MAIN(TestExecutor)
+#include "test_executor.moc"

@@ -1,0 +1,236 @@
+// Pre-flight and preview without a robot: every problem of a program is reported by instruction
+// (unreachable pose, joint and soft limits, safety box for targets and paths, degenerate arcs,
+// invalid fields); a clean program gives a TCP polyline per motion; and the executor's time
+// scaling ramps with bounded rate and rate change, without overshoot.
+#include <QtTest>
+
+#include <cmath>
+
+#include <xmate/model.h>
+
+#include "teach/preflight.h"
+#include "teach/recording.h"
+#include "teach/time_scaling.h"
+
+using namespace xmate;
+using namespace xmate::teach;
+
+namespace {
+
+const std::array<double, 7> kStart{0.0, 0.5236, 0.0, 1.0472, 0.0, 1.5708, 0.0};  // the simulator's start
+
+// A target holding q and the pose and arm angle it gives.
+Target targetAt(const std::array<double, 7>& q) {
+  XmateModel model(XMATE7_PRO);
+  Target t;
+  t.has_q = true;
+  t.q = q;
+  t.has_pose = true;
+  t.pose = model.GetCartPose(q);
+  t.has_psi = true;
+  t.psi = model.GetPsi(q);
+  return t;
+}
+
+Target poseOnly(const Target& t) {
+  Target p = t;
+  p.has_q = false;
+  return p;
+}
+
+Target shifted(const Target& t, double dx, double dy, double dz) {
+  Target p = poseOnly(t);
+  p.pose[3] += dx;
+  p.pose[7] += dy;
+  p.pose[11] += dz;
+  return p;
+}
+
+TraceOptions fromStart() {
+  TraceOptions o;
+  o.q_start = kStart;
+  return o;
+}
+
+QString allMessages(const std::vector<Problem>& problems) { return QString::fromStdString(problemsText(problems)); }
+
+}  // namespace
+
+class TestPreflight : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void cleanProgramPassesWithAPreview();
+  void everyProblemIsReportedByInstruction();
+  void safetyBoxTargetsAndPaths();
+  void softLimits();
+  void invalidFieldsOfAProgramBuiltInMemory();
+  void timeScalingRampsWithinItsBounds();
+};
+
+void TestPreflight::cleanProgramPassesWithAPreview() {
+  const Target home = targetAt(kStart);
+  Program p;
+  p.instructions.push_back(moveJ(targetAt({0.2, 0.4, 0.1, 1.3, 0.0, 1.3, 0.2}), 0.5, "P1"));
+  p.instructions.push_back(moveL(shifted(home, 0.0, 0.05, -0.1), 0.3));
+  const Target l = shifted(home, 0.0, 0.05, -0.1);
+  p.instructions.push_back(moveC(shifted(l, 0.05, 0.05, 0.0), shifted(l, 0.0, 0.1, 0.0), 0.3));
+  const ProgramTrace trace = traceProgram(p, fromStart());
+  QVERIFY2(trace.problems.empty(), qPrintable(allMessages(trace.problems)));
+  QCOMPARE(trace.instructions.size(), size_t(3));
+  for (const InstructionTrace& t : trace.instructions) {
+    QVERIFY(t.traced);
+    QVERIFY(t.tcp_path.size() >= 3);
+  }
+  // The arc's polyline ends at its target and passes near the via point.
+  const auto& arc = trace.instructions[2].tcp_path;
+  const Target target = shifted(l, 0.0, 0.1, 0.0), via = shifted(l, 0.05, 0.05, 0.0);
+  QVERIFY(std::abs(arc.back()[1] - target.pose[7]) < 1e-9);
+  double closest = 1;
+  for (const auto& pt : arc)
+    closest = std::min(closest, std::hypot(pt[0] - via.pose[3], pt[1] - via.pose[7], pt[2] - via.pose[11]));
+  QVERIFY(closest < 2e-3);
+  // The 3D view's shortcut gives the same polylines; a non-motion has none.
+  Instruction wait;
+  wait.type = InstructionType::kWait;
+  p.instructions.push_back(wait);
+  const auto paths = plannedPath(p, kStart);
+  QCOMPARE(paths.size(), size_t(4));
+  QCOMPARE(paths[2], arc);
+  QVERIFY(paths[3].empty());
+}
+
+void TestPreflight::everyProblemIsReportedByInstruction() {
+  const Target home = targetAt(kStart);
+  Program p;
+  p.instructions.push_back(moveL(shifted(home, 0.0, 0.0, -0.05), 0.3, "ok"));
+  p.instructions.push_back(moveL(shifted(home, 2.0, 0.0, 0.0), 0.3, "far"));           // unreachable
+  Target beyond = targetAt(kStart);
+  beyond.has_pose = false;
+  beyond.q[1] = 2.5;                                                                    // J2 beyond 120 deg
+  p.instructions.push_back(moveJ(beyond, 0.3, "limit"));
+  const Target l = shifted(home, 0.0, 0.0, -0.05);
+  p.instructions.push_back(moveC(shifted(l, 0.0, 0.0, -0.02), shifted(l, 0.0, 0.0, -0.04), 0.3, "line"));  // collinear
+  p.instructions.push_back(moveJ(shifted(home, 0.0, 0.0, 3.0), 0.3, "high"));          // IK of a pose out of reach
+  const std::vector<Problem> problems = preflight(p, fromStart());
+  const QString text = allMessages(problems);
+  QCOMPARE(problems.size(), size_t(4));
+  QCOMPARE(problems[0].instruction, size_t(1));
+  QVERIFY2(text.contains("instruction 2 (MOVEL \"far\"): the path cannot be followed"), qPrintable(text));
+  QVERIFY2(text.contains("beyond the arm's reach"), qPrintable(text));
+  QVERIFY2(text.contains("instruction 3 (MOVEJ \"limit\"): the target: joint 2 at 2.5000 rad"), qPrintable(text));
+  QVERIFY2(text.contains("instruction 4 (MOVEC \"line\"): MOVEC: start, via and target are collinear"), qPrintable(text));
+  QVERIFY2(text.contains("instruction 5 (MOVEJ \"high\"): the target pose cannot be reached"), qPrintable(text));
+}
+
+void TestPreflight::safetyBoxTargetsAndPaths() {
+  const Target home = targetAt(kStart);
+  TraceOptions o = fromStart();
+  o.has_box = true;
+  o.box.size = {0.6, 0.6, 0.4};
+  o.box.frame = kIdentityPose;
+  o.box.frame[3] = home.pose[3];
+  o.box.frame[7] = home.pose[7];
+  o.box.frame[11] = home.pose[11];  // centred on the start TCP: +-0.3 m in x, y, +-0.2 m in z
+  Program p;
+  p.instructions.push_back(moveL(shifted(home, 0.0, 0.0, -0.1), 0.3, "inside"));
+  p.instructions.push_back(moveL(shifted(home, 0.0, 0.0, -0.25), 0.3, "below"));  // target out of the box
+  // An arc from (z - 0.1) through a via far out in y back to a target inside: the path leaves.
+  const Target l = shifted(home, 0.0, 0.0, -0.1);
+  p.instructions.push_back(moveC(shifted(l, 0.0, 0.2, 0.0), shifted(l, 0.0, 0.0, 0.15), 0.3, "bulge"));
+  const std::vector<Problem> problems = preflight(p, o);
+  const QString text = allMessages(problems);
+  QCOMPARE(problems.size(), size_t(2));
+  QVERIFY2(text.contains("instruction 2 (MOVEL \"below\"): the target (") && text.contains("outside the Cartesian safety box"),
+           qPrintable(text));
+  QVERIFY2(text.contains("instruction 3 (MOVEC \"bulge\"): the path leaves the Cartesian safety box"), qPrintable(text));
+}
+
+void TestPreflight::softLimits() {
+  TraceOptions o = fromStart();
+  o.has_soft_limits = true;
+  for (int j = 0; j < 7; ++j) {
+    o.soft_lower[j] = -1.0;
+    o.soft_upper[j] = 1.6;
+  }
+  Target t = targetAt(kStart);
+  t.q[0] = 1.2;
+  Program ok;
+  ok.instructions.push_back(moveJ(t, 0.3));
+  QVERIFY(preflight(ok, o).empty());
+  o.soft_upper[0] = 1.0;
+  const std::vector<Problem> problems = preflight(ok, o);
+  QCOMPARE(problems.size(), size_t(1));
+  QVERIFY2(allMessages(problems).contains("joint 1 at 68.75 deg is outside its soft limits"), qPrintable(allMessages(problems)));
+  // Soft limits that make no sense are a problem of their own, not a crash.
+  o.soft_lower[0] = 1.2;
+  const std::vector<Problem> bad = preflight(ok, o);
+  QCOMPARE(bad.size(), size_t(1));
+  QVERIFY2(allMessages(bad).contains("the pre-flight cannot start"), qPrintable(allMessages(bad)));
+}
+
+void TestPreflight::invalidFieldsOfAProgramBuiltInMemory() {
+  Program p;
+  Target t = targetAt(kStart);
+  t.q[3] = NAN;
+  t.has_pose = false;
+  p.instructions.push_back(moveJ(t, 0.3));
+  p.instructions.push_back(moveJ(targetAt(kStart), 1.7));
+  Instruction wait;
+  wait.type = InstructionType::kWaitDi;
+  wait.signal = 9;
+  wait.timeout_ms = 100;
+  p.instructions.push_back(wait);
+  const std::vector<Problem> problems = preflight(p, fromStart());
+  const QString text = allMessages(problems);
+  QCOMPARE(problems.size(), size_t(3));
+  QVERIFY2(text.contains("instruction 1 (MOVEJ), field \"target.q[3]\": not a finite number"), qPrintable(text));
+  QVERIFY2(text.contains("instruction 2 (MOVEJ), field \"speed\""), qPrintable(text));
+  QVERIFY2(text.contains("instruction 3 (WAIT_DI), field \"signal\": unknown signal"), qPrintable(text));
+}
+
+void TestPreflight::timeScalingRampsWithinItsBounds() {
+  const double dt = 1e-3;
+  const double rate = safeScalingRate(0.8, 7.5 / 2.175);  // full speed, the xMate Pro's J2
+  QVERIFY(rate > 0.7 && rate < 0.8);
+  QCOMPARE(safeScalingRate(0.05, 10), TimeScaling::kMaxRate);
+  TimeScaling k(1.0, rate);
+  k.setTarget(0.0);
+  double previous = k.value(), previous_rate = 0;
+  int steps = 0;
+  while (!k.settled() && steps < 10000) {
+    k.step(dt);
+    const double slope = (k.value() - previous) / dt;
+    QVERIFY(k.value() <= previous);  // monotone, never below the target
+    QVERIFY(k.value() >= 0);
+    QVERIFY(std::abs(slope) <= rate * (1 + 1e-9));
+    // The rate changes by at most kRateChange * dt per step (the final snap to rest at most twice).
+    QVERIFY2(std::abs(slope - previous_rate) <= 2 * TimeScaling::kRateChange * dt + 1e-12,
+             qPrintable(QString("step %1: rate %2 -> %3").arg(steps).arg(previous_rate).arg(slope)));
+    previous = k.value();
+    previous_rate = slope;
+    ++steps;
+  }
+  QCOMPARE(k.value(), 0.0);
+  const double seconds = steps * dt;
+  qInfo("time scaling 1 -> 0 in %.3f s", seconds);
+  QVERIFY(seconds > 1.0 / rate && seconds < 1.0 / rate + 2 * rate / TimeScaling::kRateChange);
+  // Back up to an override of 0.4, then down to 0.1 on the way: no overshoot.
+  k.setTarget(0.4);
+  for (int i = 0; i < 400; ++i) k.step(dt);
+  k.setTarget(0.1);
+  double highest = 0;
+  for (int i = 0; i < 5000; ++i) {
+    k.step(dt);
+    highest = std::max(highest, k.value());
+  }
+  QVERIFY(highest <= 0.4 + 1e-12);
+  QCOMPARE(k.value(), 0.1);
+}
+
+int runPreflightTests(int argc, char** argv) {
+  TestPreflight t;
+  return QTest::qExec(&t, argc, argv);
+}
+
+#include "test_preflight.moc"

@@ -1,0 +1,389 @@
+// The program file format: the JSON reader/writer (escapes, numbers, line:column errors), programs
+// round-tripping through files, every kind of bad field named by instruction and field, atomic
+// saving that never loses the previous file, and truncated or garbled inputs that never crash.
+#include <QtTest>
+
+#include <cmath>
+#include <random>
+
+#include "teach/atomic_file.h"
+#include "teach/json.h"
+#include "teach/program_io.h"
+#include "teach/recording.h"
+
+using namespace xmate;
+using namespace xmate::teach;
+
+namespace {
+
+const std::array<double, 16> kPose{1, 0, 0, 0.5, 0, -1, 0, 0.1, 0, 0, -1, 0.4, 0, 0, 0, 1};
+
+Program sampleProgram() {
+  Program p;
+  p.robot = XMATE7_PRO;
+  Target q;
+  q.has_q = true;
+  q.q = {0.1, 0.2, 0.3, 1.2, -0.1, 1.1, 0.7};
+  Target pose;
+  pose.has_pose = true;
+  pose.pose = kPose;
+  pose.has_psi = true;
+  pose.psi = 0.25;
+  Target both = q;
+  both.has_pose = true;
+  both.pose = kPose;
+  both.pose[3] = 0.45;
+  both.has_psi = true;
+  both.psi = -0.5;
+  p.instructions.push_back(moveJ(q, 0.3, "P1"));
+  p.instructions.push_back(moveL(pose, 0.2));
+  p.instructions.push_back(moveC(pose, both, 1.0, "arc \"quoted\" \\ name"));
+  Instruction wait;
+  wait.type = InstructionType::kWait;
+  wait.ms = 500;
+  p.instructions.push_back(wait);
+  Instruction set;
+  set.type = InstructionType::kSetDo;
+  set.signal = 1;
+  set.value = true;
+  p.instructions.push_back(set);
+  Instruction waitDi;
+  waitDi.type = InstructionType::kWaitDi;
+  waitDi.signal = 5;
+  waitDi.value = false;
+  waitDi.timeout_ms = 2000;
+  p.instructions.push_back(waitDi);
+  return p;
+}
+
+bool sameTarget(const Target& a, const Target& b) {
+  return a.has_q == b.has_q && a.q == b.q && a.has_pose == b.has_pose && a.pose == b.pose && a.has_psi == b.has_psi &&
+         (!a.has_psi || a.psi == b.psi);
+}
+
+bool sameProgram(const Program& a, const Program& b) {
+  if (a.robot != b.robot || a.instructions.size() != b.instructions.size()) return false;
+  for (size_t i = 0; i < a.instructions.size(); ++i) {
+    const Instruction &x = a.instructions[i], &y = b.instructions[i];
+    if (x.type != y.type || x.name != y.name) return false;
+    if (isMotion(x.type) && (!sameTarget(x.target, y.target) || x.speed != y.speed)) return false;
+    if (x.type == InstructionType::kMoveC && !sameTarget(x.via, y.via)) return false;
+    if (x.type == InstructionType::kWait && x.ms != y.ms) return false;
+    if ((x.type == InstructionType::kSetDo || x.type == InstructionType::kWaitDi) &&
+        (x.signal != y.signal || x.value != y.value || x.timeout_ms != y.timeout_ms))
+      return false;
+  }
+  return true;
+}
+
+// The message of the ProgramError that parsing `text` throws ("" if it parses).
+QString errorOf(const std::string& text) {
+  try {
+    parseProgram(text);
+  } catch (const ProgramError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+// A one-instruction program with the given instruction JSON.
+std::string withInstruction(const std::string& instruction, const std::string& robot = "xmate7_pro") {
+  return R"({"format": "rci-program", "version": 1, "robot": ")" + robot + R"(", "instructions": [)" + instruction +
+         "]}";
+}
+
+const char* kPoseJson = "[1,0,0,0.5, 0,-1,0,0.1, 0,0,-1,0.4, 0,0,0,1]";
+
+std::string dataDir() {
+  const QByteArray dir = qgetenv("RCI_DATA_DIR");
+  return dir.isEmpty() ? std::string(".") : dir.toStdString();
+}
+
+}  // namespace
+
+class TestProgram : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void jsonParsesEveryKind();
+  void jsonEscapesRoundTrip();
+  void jsonErrorsSayLineAndColumn_data();
+  void jsonErrorsSayLineAndColumn();
+  void programRoundTripsThroughAFile();
+  void exampleProgramLoads();
+  void badFieldsAreNamed_data();
+  void badFieldsAreNamed();
+  void robotMismatchIsRefused();
+  void atomicSaveReplacesAndLeavesNoTemporary();
+  void failedSaveKeepsThePreviousFile();
+  void truncatedInputsNeverCrash();
+  void garbledInputsNeverCrash();
+  void recordingFromState();
+};
+
+void TestProgram::jsonParsesEveryKind() {
+  const JsonValue v = parseJson(R"( {"a": [1, -2.5e3, 0.125, 1E-2], "b": true, "c": false, "d": null, "e": "x", "f": {}} )");
+  QVERIFY(v.isObject());
+  QCOMPARE(v.size(), size_t(6));
+  const JsonValue* a = v.find("a");
+  QVERIFY(a && a->isArray() && a->size() == 4);
+  QCOMPARE(a->at(1).asNumber(), -2500.0);
+  QCOMPARE(a->at(3).asNumber(), 0.01);
+  QVERIFY(v.find("b")->asBool());
+  QVERIFY(!v.find("c")->asBool());
+  QCOMPARE(v.find("d")->kind(), JsonValue::Kind::kNull);
+  QCOMPARE(v.find("e")->asString(), std::string("x"));
+  QVERIFY(v.find("f")->isObject());
+  QVERIFY(!v.find("missing"));
+  // Doubles round-trip exactly.
+  JsonValue n = JsonValue::array();
+  for (double d : {0.1, 1.0 / 3.0, -1e-300, 6.02214076e23, 0.0}) n.push(JsonValue::number(d));
+  const JsonValue back = parseJson(writeJson(n));
+  for (size_t i = 0; i < n.size(); ++i) QCOMPARE(back.at(i).asNumber(), n.at(i).asNumber());
+  // Non-finite numbers cannot be written.
+  QVERIFY_THROWS_EXCEPTION(std::invalid_argument, writeJson(JsonValue::number(NAN)));
+}
+
+void TestProgram::jsonEscapesRoundTrip() {
+  const JsonValue v = parseJson(R"(["a\"b\\c\/d\b\f\n\r\t", "\u00e9\u20ac", "\ud83d\ude00"])");
+  QCOMPARE(v.at(0).asString(), std::string("a\"b\\c/d\b\f\n\r\t"));
+  QCOMPARE(v.at(1).asString(), std::string("\xc3\xa9\xe2\x82\xac"));
+  QCOMPARE(v.at(2).asString(), std::string("\xf0\x9f\x98\x80"));
+  JsonValue s = JsonValue::array();
+  s.push(JsonValue::string(std::string("ctl\x01 \"q\" \\ \n")));
+  QCOMPARE(parseJson(writeJson(s)).at(0).asString(), s.at(0).asString());
+}
+
+void TestProgram::jsonErrorsSayLineAndColumn_data() {
+  QTest::addColumn<QString>("text");
+  QTest::addColumn<QString>("expected");
+  QTest::newRow("bad literal") << "{\n  \"a\": tru\n}" << "line 2, column 8";
+  QTest::newRow("missing comma") << "[1 2]" << "line 1, column 4: expected ',' or ']'";
+  QTest::newRow("trailing text") << "{} x" << "unexpected text after the end";
+  QTest::newRow("duplicate key") << "{\"a\": 1,\n \"a\": 2}" << "line 2, column 2: duplicate member \"a\"";
+  QTest::newRow("NaN") << "[NaN]" << "NaN and Infinity are not JSON numbers";
+  QTest::newRow("overflow") << "[1e999]" << "too large";
+  QTest::newRow("leading zero") << "[01]" << "leading zeros";
+  QTest::newRow("bad escape") << "[\"\\x\"]" << "invalid escape";
+  QTest::newRow("control char") << "[\"a\nb\"]" << "control character";
+  QTest::newRow("unterminated") << "[\"abc" << "missing closing";
+  QTest::newRow("empty") << "" << "expected a value";
+  QTest::newRow("lone surrogate") << "[\"\\udc00\"]" << "low surrogate";
+  QTest::newRow("deep") << QString(300, '[') << "nesting deeper";
+}
+
+void TestProgram::jsonErrorsSayLineAndColumn() {
+  QFETCH(QString, text);
+  QFETCH(QString, expected);
+  try {
+    parseJson(text.toStdString());
+    QFAIL("parsed");
+  } catch (const JsonError& e) {
+    QVERIFY2(QString(e.what()).contains(expected), e.what());
+  }
+}
+
+void TestProgram::programRoundTripsThroughAFile() {
+  QTemporaryDir dir;
+  const std::string path = (dir.path() + "/program.json").toStdString();
+  const Program p = sampleProgram();
+  saveProgram(path, p);
+  const Program back = loadProgram(path);
+  QVERIFY(sameProgram(p, back));
+  // The text is the documented format.
+  const QString text = QString::fromStdString(readFile(path));
+  QVERIFY(text.contains("\"format\": \"rci-program\""));
+  QVERIFY(text.contains("\"version\": 1"));
+  QVERIFY(text.contains("\"robot\": \"xmate7_pro\""));
+  QVERIFY(text.contains("\"signal\": \"DO0_1\""));
+  QVERIFY(text.contains("\"signal\": \"DI1_1\""));
+  // Saving what was loaded gives the same text.
+  QCOMPARE(programText(back), programText(p));
+}
+
+void TestProgram::exampleProgramLoads() {
+  const Program p = loadProgram(dataDir() + "/resources/programs/example.json");
+  QCOMPARE(p.robot, XMATE7_PRO);
+  QCOMPARE(p.instructions.size(), size_t(7));
+  QCOMPARE(p.instructions[2].type, InstructionType::kMoveC);
+}
+
+void TestProgram::badFieldsAreNamed_data() {
+  QTest::addColumn<QString>("text");
+  QTest::addColumn<QString>("expected");
+  const std::string pose = kPoseJson;
+  auto row = [](const char* name, const std::string& text, const char* expected) {
+    QTest::newRow(name) << QString::fromStdString(text) << QString(expected);
+  };
+  row("not json", "{\"format\": ", "not valid JSON: line 1, column 12");
+  row("unknown format", R"({"format": "other", "version": 1, "robot": "xmate7_pro", "instructions": []})",
+      "field \"format\": expected \"rci-program\"");
+  row("unknown version", R"({"format": "rci-program", "version": 2, "robot": "xmate7_pro", "instructions": []})",
+      "field \"version\": unsupported version");
+  row("unknown robot", withInstruction("", "xmate9"), "field \"robot\": unknown model \"xmate9\"");
+  row("unknown type", withInstruction(R"({"type": "JUMP"})"), "instruction 1, field \"type\": unknown instruction type \"JUMP\"");
+  row("type not string", withInstruction(R"({"type": 3})"), "instruction 1, field \"type\": expected a string, got a number");
+  row("speed wrong type", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,0]}, "speed": "fast"})"),
+      "instruction 1 (MOVEJ), field \"speed\": expected a number, got a string");
+  row("speed too high", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,0]}, "speed": 1.5})"),
+      "instruction 1 (MOVEJ), field \"speed\": expected a speed ratio in (0, 1]");
+  row("speed zero", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,0]}, "speed": 0})"),
+      "field \"speed\": expected a speed ratio in (0, 1]");
+  row("speed missing", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,0]}})"),
+      "instruction 1 (MOVEJ), field \"speed\": missing");
+  row("q too short", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0]}, "speed": 0.5})"),
+      "field \"target.q\": expected an array of 7 numbers (joint angles in rad), got 6 elements");
+  row("q element not number", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,null,0,0,0,0]}, "speed": 0.5})"),
+      "field \"target.q[2]\": expected a number, got null");
+  row("q overflow", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,1e400,0,0,0,0]}, "speed": 0.5})"),
+      "too large for a double");
+  row("q NaN literal", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,NaN,0,0,0,0]}, "speed": 0.5})"),
+      "NaN and Infinity are not JSON numbers");
+  row("empty target", withInstruction(R"({"type": "MOVEL", "target": {}, "speed": 0.5})"),
+      "instruction 1 (MOVEL), field \"target\": needs \"q\"");
+  row("pose length", withInstruction(R"({"type": "MOVEL", "target": {"pose": [1,0,0]}, "speed": 0.5})"),
+      "field \"target.pose\": expected an array of 16 numbers");
+  row("pose not homogeneous",
+      withInstruction(R"({"type": "MOVEL", "target": {"pose": [2,0,0,0.5, 0,1,0,0, 0,0,1,0.4, 0,0,0,1]}, "speed": 0.5})"),
+      "instruction 1 (MOVEL), field \"target.pose\": not a homogeneous transform");
+  row("pose bad last row",
+      withInstruction(R"({"type": "MOVEL", "target": {"pose": [1,0,0,0.5, 0,1,0,0, 0,0,1,0.4, 0,0,1,1]}, "speed": 0.5})"),
+      "field \"target.pose\": not a homogeneous transform");
+  row("psi without pose", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,0], "psi": 0}, "speed": 0.5})"),
+      "field \"target.psi\": an arm angle needs a \"pose\"");
+  row("movec without via", withInstruction(R"({"type": "MOVEC", "target": {"pose": )" + pose + R"(}, "speed": 0.5})"),
+      "instruction 1 (MOVEC), field \"via\": missing");
+  row("unknown member", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,0]}, "sped": 0.5})"),
+      "instruction 1 (MOVEJ), field \"sped\": unknown member");
+  row("unknown do", withInstruction(R"({"type": "SET_DO", "signal": "DO7", "value": true})"),
+      "instruction 1 (SET_DO), field \"signal\": unknown signal \"DO7\"");
+  row("di as do", withInstruction(R"({"type": "SET_DO", "signal": "DI0_1", "value": true})"),
+      "field \"signal\": unknown signal \"DI0_1\"");
+  row("do value type", withInstruction(R"({"type": "SET_DO", "signal": "DO0_1", "value": 1})"),
+      "field \"value\": expected true or false, got a number");
+  row("wait negative", withInstruction(R"({"type": "WAIT", "ms": -5})"),
+      "instruction 1 (WAIT), field \"ms\": expected a whole number in [0, 3600000]");
+  row("wait fraction", withInstruction(R"({"type": "WAIT", "ms": 1.5})"), "field \"ms\": expected a whole number");
+  row("wait_di no timeout", withInstruction(R"({"type": "WAIT_DI", "signal": "DI0_1", "value": true})"),
+      "instruction 1 (WAIT_DI), field \"timeout_ms\": missing");
+  row("six-axis q[6]", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,1]}, "speed": 0.5})", "xmate3"),
+      "field \"target.q[6]\": must be 0 on the 6-axis xMate 3");
+  row("second instruction",
+      withInstruction(R"({"type": "WAIT", "ms": 5}, {"type": "MOVEL", "name": "P2", "target": {"pose": 5}, "speed": 0.5})"),
+      "instruction 2 (MOVEL), field \"target.pose\": expected an array of 16 numbers");
+  row("instructions not array", R"({"format": "rci-program", "version": 1, "robot": "xmate7_pro", "instructions": {}})",
+      "field \"instructions\": expected an array, got an object");
+  row("not an object", "[1, 2]", "a program is a JSON object");
+}
+
+void TestProgram::badFieldsAreNamed() {
+  QFETCH(QString, text);
+  QFETCH(QString, expected);
+  const QString message = errorOf(text.toStdString());
+  QVERIFY2(message.contains(expected), qPrintable("got: " + message));
+}
+
+void TestProgram::robotMismatchIsRefused() {
+  const Program p = sampleProgram();
+  requireRobot(p, XMATE7_PRO);
+  try {
+    requireRobot(p, XMATE3);
+    QFAIL("accepted a program for another model");
+  } catch (const ProgramError& e) {
+    QVERIFY2(QString(e.what()).contains("taught for the xMate Pro 7 (xmate7_pro) but the robot is the xMate 3"),
+             e.what());
+  }
+}
+
+void TestProgram::atomicSaveReplacesAndLeavesNoTemporary() {
+  QTemporaryDir dir;
+  const std::string path = (dir.path() + "/p.json").toStdString();
+  writeFileAtomically(path, "old");
+  writeFileAtomically(path, "new contents");
+  QCOMPARE(QString::fromStdString(readFile(path)), QString("new contents"));
+  QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"p.json"});
+}
+
+void TestProgram::failedSaveKeepsThePreviousFile() {
+  QTemporaryDir dir;
+  // The target is a folder with something in it: the rename fails, nothing is lost or left behind.
+  const QString target = dir.path() + "/taken";
+  QVERIFY(QDir(dir.path()).mkdir("taken"));
+  QFile keep(target + "/keep.txt");
+  QVERIFY(keep.open(QIODevice::WriteOnly));
+  keep.write("precious");
+  keep.close();
+  try {
+    saveProgram(target.toStdString(), sampleProgram());
+    QFAIL("saved over a folder");
+  } catch (const std::runtime_error& e) {
+    QVERIFY2(QString(e.what()).contains("previous file is unchanged"), e.what());
+  }
+  QCOMPARE(QString::fromStdString(readFile((target + "/keep.txt").toStdString())), QString("precious"));
+  QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{});
+  // A folder that does not exist: a clear error, no crash.
+  QVERIFY_THROWS_EXCEPTION(std::runtime_error, saveProgram((dir.path() + "/no/such/p.json").toStdString(), sampleProgram()));
+  QVERIFY_THROWS_EXCEPTION(std::runtime_error, loadProgram((dir.path() + "/missing.json").toStdString()));
+}
+
+void TestProgram::truncatedInputsNeverCrash() {
+  const std::string text = programText(sampleProgram());
+  int refused = 0;
+  // text ends with "}\n": every prefix shorter than size() - 1 is incomplete.
+  for (size_t n = 0; n + 1 < text.size(); ++n) {
+    try {
+      parseProgram(text.substr(0, n));
+    } catch (const ProgramError&) {
+      ++refused;
+    }
+  }
+  QCOMPARE(refused, int(text.size()) - 1);
+}
+
+void TestProgram::garbledInputsNeverCrash() {
+  const std::string text = programText(sampleProgram());
+  std::mt19937 rng(12345);
+  const char alphabet[] = "{}[],:\"\\0123456789.eE-+ truefalsnul\n\x01\xff";
+  int parsed = 0;
+  for (int round = 0; round < 3000; ++round) {
+    std::string s = text;
+    const int edits = 1 + int(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const size_t at = rng() % s.size();
+      switch (rng() % 3) {
+        case 0: s[at] = alphabet[rng() % (sizeof alphabet - 1)]; break;
+        case 1: s.erase(at, 1 + rng() % 8); break;
+        default: s.insert(at, 1, alphabet[rng() % (sizeof alphabet - 1)]); break;
+      }
+      if (s.empty()) s.push_back('{');
+    }
+    try {
+      parseProgram(s);
+      ++parsed;
+    } catch (const ProgramError&) {
+    }
+  }
+  qInfo("garbled inputs: %d of 3000 still parsed as programs, the rest were refused", parsed);
+}
+
+void TestProgram::recordingFromState() {
+  RCI::robot::RobotState s;
+  s.q = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7};
+  s.toolTobase_pos_m = kPose;
+  s.psi_m = 0.3;
+  const Target t = targetFromState(s, XMATE7_PRO);
+  QVERIFY(t.has_q && t.has_pose && t.has_psi);
+  QCOMPARE(t.q, s.q);
+  QCOMPARE(t.pose, kPose);
+  QCOMPARE(t.psi, 0.3);
+  const Target six = targetFromState(s, XMATE3);
+  QCOMPARE(six.q[6], 0.0);
+  QCOMPARE(six.psi, 0.0);
+}
+
+int runProgramTests(int argc, char** argv) {
+  TestProgram t;
+  return QTest::qExec(&t, argc, argv);
+}
+
+#include "test_program.moc"
