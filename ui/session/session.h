@@ -10,6 +10,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include <xmate/rci_types.h>
 #include <xmate/robot.h>
@@ -69,6 +70,15 @@ struct OperatorSettings {
   std::array<double, 7> soft_upper_deg{}, soft_lower_deg{};
 };
 
+// What the Program panel (issue 5) shows in the 3D view: the taught waypoints (TCP positions in the
+// base frame, m, with their names) and the planned TCP path through them.
+struct ProgramOverlay {
+  std::vector<std::array<double, 3>> waypoints;
+  std::vector<QString> labels;               // one per waypoint ("P1", ...)
+  std::vector<std::array<double, 3>> path;   // polyline, m
+  int selected = -1;                         // index into waypoints, -1 if none
+};
+
 class Session : public QObject {
   Q_OBJECT
  public:
@@ -80,6 +90,11 @@ class Session : public QObject {
   // Stops motion, disconnects, stops the embedded simulator. Emits closed("").
   void close();
   bool isOpen() const;
+  // Addition: true between open() and opened()/openFailed().
+  bool isOpening() const;
+  // Addition: true while the session tries to re-open after the controller stopped sending states
+  // for more than 1 s (e.g. after rebootRobot()); between reconnecting() and reconnected()/closed().
+  bool isReconnecting() const;
   const SessionTarget& target() const;
 
   // GUI thread only. Valid between opened() and closed().
@@ -100,7 +115,14 @@ class Session : public QObject {
   void runMotion(const QString& label, std::function<void(xmate::Robot&)> job);
   // The window's record of settings sent (see OperatorSettings). GUI thread only.
   const OperatorSettings& operatorSettings() const;
+  // The program overlay of the 3D view. GUI thread only.
+  const ProgramOverlay& programOverlay() const;
+  void setProgramOverlay(const ProgramOverlay& overlay);  // emits programOverlayChanged()
   void setOperatorSettings(const OperatorSettings& settings);  // emits operatorSettingsChanged()
+
+  // Addition: a panel that set DO index (0..5) through run() records it here, so live().digital_out
+  // shows it on a real robot (the simulator reports its outputs itself). GUI thread only.
+  void recordDigitalOutput(int index, bool on);
 
   void requestStop();                 // sets stopRequested() until the running motion ends
   bool stopRequested() const;         // any thread
@@ -109,6 +131,10 @@ class Session : public QObject {
   void opened();
   void openFailed(const QString& reason);
   void closed(const QString& reason);  // "" when asked for; else why (controller gone, ...)
+  // Additions: the controller went silent and the session is re-opening it / succeeded. If it
+  // cannot (10 s simulator, 60 s robot), closed(reason) follows.
+  void reconnecting(const QString& reason);
+  void reconnected();
   // Display rate (30 Hz): live() was refreshed.
   void tick();
   // Display rate, before tick(): the samples the real-time thread recorded since the last batch,
@@ -116,6 +142,7 @@ class Session : public QObject {
   void samplesArrived(const xmate::client::StateSample* samples, int count);
   void commandFinished(const QString& label, bool ok, const QString& message);
   void operatorSettingsChanged();
+  void programOverlayChanged();
   void motionStarted(const QString& label);
   void motionFinished(const QString& label, bool ok, const QString& message);
 

@@ -1,0 +1,383 @@
+// Session: opens and closes links on background threads, runs commands and motions on worker
+// threads, and refreshes LiveState at 30 Hz on the GUI thread (session.h; DESIGN.md "Threads").
+#include "session/session.h"
+
+#include <QElapsedTimer>
+#include <QMetaObject>
+#include <QTimer>
+
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "session/session_link.h"
+
+namespace rci::ui {
+namespace {
+
+constexpr int kTickMs = 33;            // ~30 Hz display rate
+constexpr qint64 kSilenceLimitMs = 1000;  // no state for this long: the controller is gone
+
+// Threads that open or tear down links; joined when done or at the latest by joinAll().
+class BackgroundThreads {
+ public:
+  ~BackgroundThreads() { joinAll(); }
+  void start(std::function<void()> work) {
+    reapFinished();
+    auto done = std::make_shared<std::atomic<bool>>(false);
+    threads_.push_back({std::thread([work = std::move(work), done] {
+                          work();
+                          done->store(true);
+                        }),
+                        done});
+  }
+  void joinAll() {
+    for (auto& entry : threads_) entry.thread.join();
+    threads_.clear();
+  }
+
+ private:
+  struct Entry {
+    std::thread thread;
+    std::shared_ptr<std::atomic<bool>> done;
+  };
+  void reapFinished() {
+    std::erase_if(threads_, [](Entry& entry) {
+      if (!entry.done->load()) return false;
+      entry.thread.join();
+      return true;
+    });
+  }
+  std::vector<Entry> threads_;
+};
+
+QString silenceReason(const SessionTarget& target) {
+  if (target.kind == SessionTarget::Kind::kSimulator)
+    return QStringLiteral("The built-in simulator stopped sending states and could not be reached again. "
+                          "Connect again to start a fresh simulator.");
+  return QStringLiteral("The controller at %1:%2 stopped answering and could not be reached again within 60 s. "
+                        "Check that it is switched on and the network cable is plugged in, then connect again.")
+      .arg(target.host)
+      .arg(target.port);
+}
+
+}  // namespace
+
+struct Session::Impl {
+  explicit Impl(Session& s) : self(s) {}
+
+  void open(const SessionTarget& target);
+  void finishOpen(uint64_t generation, std::shared_ptr<Link> opened, const QString& error);
+  void startWorkers(uint64_t generation);
+  void close(const QString& reason, bool emit_always);
+  void teardown(std::shared_ptr<Link> old);
+  void applyPoll(uint64_t generation, const PollResult& poll);
+  void onTick();
+  void drainSamples();
+  void refreshLive();
+  bool controllerSilent();
+  void startReconnect();
+  void finishReconnect(uint64_t generation, bool ok);
+  void restartWatchdog();
+
+  Session& self;
+  SessionTarget target;
+  std::shared_ptr<Link> link;  // GUI thread only; the workers get raw pointers into it
+  bool opening = false;
+  bool reconnecting = false;   // a reconnect job is running: the client's session is being replaced
+  uint64_t generation = 0;     // bumped by open/close: results of older links are ignored
+  LiveState live;
+  OperatorSettings settings;
+  ProgramOverlay overlay;
+  std::array<double, 16> model_tool{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  std::array<bool, 6> recorded_do{};
+  std::atomic<bool> stop_requested{false};
+  std::atomic<bool> motion_busy{false};
+  QTimer timer;
+  std::vector<xmate::client::StateSample> batch = std::vector<xmate::client::StateSample>(
+      xmate::client::SampleRing::capacity());
+  QElapsedTimer clock;
+  qint64 rate_start_ms = 0;
+  uint64_t rate_start_count = 0;
+  qint64 last_progress_ms = 0;
+  uint64_t last_count = 0;
+  BackgroundThreads background;
+};
+
+void Session::Impl::open(const SessionTarget& wanted) {
+  close(QString(), false);
+  target = wanted;
+  opening = true;
+  const uint64_t my_generation = ++generation;
+  background.start([this, my_generation, wanted] {
+    std::shared_ptr<Link> opened;
+    QString error;
+    try {
+      opened = openLink(wanted);
+    } catch (const std::exception& e) {
+      error = QString::fromStdString(e.what());
+    }
+    // Hand-off: Qt queued invocation; the link moves to the GUI thread inside the shared_ptr.
+    QMetaObject::invokeMethod(
+        &self, [this, my_generation, opened, error] { finishOpen(my_generation, opened, error); },
+        Qt::QueuedConnection);
+  });
+}
+
+void Session::Impl::finishOpen(uint64_t my_generation, std::shared_ptr<Link> opened, const QString& error) {
+  if (my_generation != generation) {  // closed or re-opened meanwhile
+    if (opened) teardown(std::move(opened));
+    return;
+  }
+  opening = false;
+  if (!opened) {
+    emit self.openFailed(error);
+    return;
+  }
+  link = std::move(opened);
+  live = LiveState{};
+  live.connected = true;
+  live.simulated = link->server != nullptr;
+  live.dof = link->model->Dof();
+  model_tool = link->robot->toolFrame();
+  recorded_do = {};
+  startWorkers(my_generation);
+  clock.start();
+  restartWatchdog();
+  timer.start(kTickMs);
+  emit self.opened();
+}
+
+void Session::Impl::startWorkers(uint64_t my_generation) {
+  xmate::Robot* robot = link->robot.get();
+  link->commands = std::make_unique<JobWorker>("rci-commands", [this, robot, my_generation] {
+    PollResult poll = pollRobot(*robot);
+    // Hand-off: Qt queued invocation of the poll result to the GUI thread.
+    QMetaObject::invokeMethod(&self, [this, my_generation, poll] { applyPoll(my_generation, poll); },
+                              Qt::QueuedConnection);
+  });
+  link->motions = std::make_unique<JobWorker>("rci-motion");
+}
+
+void Session::Impl::close(const QString& reason, bool emit_always) {
+  const bool was_open = link != nullptr;
+  ++generation;
+  opening = false;
+  reconnecting = false;
+  timer.stop();
+  if (link) {
+    if (motion_busy.load()) stop_requested.store(true);
+    teardown(std::move(link));
+    link.reset();
+  }
+  live = LiveState{};
+  if (was_open || emit_always) emit self.closed(reason);
+}
+
+// Tears the link down on a background thread so a slow controller never blocks the window.
+void Session::Impl::teardown(std::shared_ptr<Link> old) {
+  background.start([old = std::move(old)] { shutdownLink(*old); });
+}
+
+void Session::Impl::applyPoll(uint64_t my_generation, const PollResult& poll) {
+  if (my_generation != generation || !poll.ok) return;
+  live.motor_state = poll.motor_state;
+  live.safety_stop = poll.safety_stop;
+  live.digital_in = poll.digital_in;
+  if (poll.tool != model_tool) {
+    model_tool = poll.tool;
+    link->model->SetCoor(model_tool);
+  }
+}
+
+void Session::Impl::drainSamples() {
+  // Hand-off: the client's SPSC ring; this (GUI) thread is its only consumer.
+  const size_t n = link->robot->connection().samples().popBatch(batch.data(), batch.size());
+  if (n > 0) emit self.samplesArrived(batch.data(), int(n));
+}
+
+void Session::Impl::refreshLive() {
+  xmate::client::Connection& connection = link->robot->connection();
+  if (connection.latestState(live.state)) {
+    live.has_state = true;
+    live.tau_ext = externalJointTorques(*link->model, live.state.q, live.state.tau_ext_in_base);
+  }
+  live.realtime = connection.realtimeStatus();
+  live.timing = connection.timing();
+  live.motion_running = motion_busy.load();
+  const qint64 now = clock.elapsed();
+  const uint64_t count = live.timing.counters.states_received;
+  if (count < rate_start_count) rate_start_count = count;  // counters restart with a new session
+  if (now - rate_start_ms >= 1000) {
+    live.loop_rate_hz = double(count - rate_start_count) * 1000.0 / double(now - rate_start_ms);
+    rate_start_ms = now;
+    rate_start_count = count;
+  }
+  if (link->server) {
+    live.sim = link->server->status().sim;
+    live.digital_out = live.sim.digital_out;
+  } else {
+    live.digital_out = recorded_do;
+  }
+}
+
+bool Session::Impl::controllerSilent() {
+  const uint64_t count = live.timing.counters.states_received;
+  const qint64 now = clock.elapsed();
+  if (count != last_count) {
+    last_count = count;
+    last_progress_ms = now;
+  }
+  return now - last_progress_ms > kSilenceLimitMs;
+}
+
+void Session::Impl::restartWatchdog() {
+  rate_start_ms = last_progress_ms = clock.elapsed();
+  rate_start_count = last_count = link->robot->connection().timing().counters.states_received;
+}
+
+// The client's session is closed and re-opened on the command worker; meanwhile this thread does not
+// touch the connection (its real-time status and counters are being replaced).
+void Session::Impl::startReconnect() {
+  reconnecting = true;
+  emit self.reconnecting(QStringLiteral("No state from %1 for more than 1 s: reconnecting …").arg(target.describe()));
+  Link* raw = link.get();
+  const uint64_t my_generation = generation;
+  link->commands->post([this, raw, my_generation] {
+    const bool ok = reconnectLink(*raw);
+    // Hand-off: Qt queued invocation of the outcome to the GUI thread.
+    QMetaObject::invokeMethod(&self, [this, my_generation, ok] { finishReconnect(my_generation, ok); },
+                              Qt::QueuedConnection);
+  });
+}
+
+void Session::Impl::finishReconnect(uint64_t my_generation, bool ok) {
+  if (my_generation != generation) return;
+  reconnecting = false;
+  if (!ok) {
+    close(silenceReason(target), true);
+    return;
+  }
+  restartWatchdog();
+  emit self.reconnected();
+}
+
+void Session::Impl::onTick() {
+  if (!link) return;
+  if (!reconnecting) {
+    drainSamples();
+    refreshLive();
+    if (controllerSilent()) startReconnect();
+  }
+  emit self.tick();
+}
+
+// ---- Session ----------------------------------------------------------------------------------
+
+Session::Session(QObject* parent) : QObject(parent), impl_(std::make_unique<Impl>(*this)) {
+  impl_->timer.setTimerType(Qt::PreciseTimer);
+  connect(&impl_->timer, &QTimer::timeout, this, [this] { impl_->onTick(); });
+}
+
+Session::~Session() {
+  impl_->close(QString(), false);
+  impl_->background.joinAll();
+}
+
+void Session::open(const SessionTarget& target) { impl_->open(target); }
+void Session::close() { impl_->close(QString(), false); }
+bool Session::isOpen() const { return impl_->link != nullptr; }
+bool Session::isOpening() const { return impl_->opening; }
+bool Session::isReconnecting() const { return impl_->reconnecting; }
+const SessionTarget& Session::target() const { return impl_->target; }
+const LiveState& Session::live() const { return impl_->live; }
+xmate::Robot* Session::robot() { return impl_->link ? impl_->link->robot.get() : nullptr; }
+xmate::sim::Server* Session::simulator() { return impl_->link ? impl_->link->server.get() : nullptr; }
+const OperatorSettings& Session::operatorSettings() const { return impl_->settings; }
+
+void Session::setOperatorSettings(const OperatorSettings& settings) {
+  impl_->settings = settings;
+  emit operatorSettingsChanged();
+}
+
+const ProgramOverlay& Session::programOverlay() const { return impl_->overlay; }
+
+void Session::setProgramOverlay(const ProgramOverlay& overlay) {
+  impl_->overlay = overlay;
+  emit programOverlayChanged();
+}
+
+void Session::recordDigitalOutput(int index, bool on) {
+  if (index >= 0 && index < 6) impl_->recorded_do[size_t(index)] = on;
+}
+
+void Session::run(const QString& label, std::function<void(xmate::Robot&)> job) {
+  if (!impl_->link) {
+    emit commandFinished(label, false, QStringLiteral("not connected: connect to a robot or the simulator first"));
+    return;
+  }
+  xmate::Robot* robot = impl_->link->robot.get();
+  const uint64_t my_generation = impl_->generation;
+  impl_->link->commands->post([this, robot, my_generation, label, job = std::move(job)] {
+    bool ok = true;
+    QString message;
+    try {
+      job(*robot);
+    } catch (const std::exception& e) {
+      ok = false;
+      message = QString::fromStdString(e.what());
+    }
+    // Hand-off: Qt queued invocation of the result to the GUI thread.
+    QMetaObject::invokeMethod(
+        this,
+        [this, my_generation, label, ok, message] {
+          if (my_generation == impl_->generation) emit commandFinished(label, ok, message);
+        },
+        Qt::QueuedConnection);
+  });
+}
+
+void Session::runMotion(const QString& label, std::function<void(xmate::Robot&)> job) {
+  if (!impl_->link) {
+    emit commandFinished(label, false, QStringLiteral("not connected: connect to a robot or the simulator first"));
+    return;
+  }
+  if (impl_->motion_busy.exchange(true)) {
+    emit commandFinished(label, false, QStringLiteral("a motion is already running"));
+    return;
+  }
+  impl_->stop_requested.store(false);
+  impl_->live.motion_running = true;
+  xmate::Robot* robot = impl_->link->robot.get();
+  const uint64_t my_generation = impl_->generation;
+  emit motionStarted(label);
+  impl_->link->motions->post([this, robot, my_generation, label, job = std::move(job)] {
+    bool ok = true;
+    QString message;
+    try {
+      job(*robot);
+    } catch (const std::exception& e) {
+      ok = false;
+      message = QString::fromStdString(e.what());
+    }
+    impl_->stop_requested.store(false);
+    impl_->motion_busy.store(false);
+    // Hand-off: Qt queued invocation of the result to the GUI thread.
+    QMetaObject::invokeMethod(
+        this,
+        [this, my_generation, label, ok, message] {
+          if (my_generation != impl_->generation) return;
+          impl_->live.motion_running = impl_->motion_busy.load();
+          emit motionFinished(label, ok, message);
+        },
+        Qt::QueuedConnection);
+  });
+}
+
+void Session::requestStop() {
+  if (impl_->motion_busy.load()) impl_->stop_requested.store(true);
+}
+
+bool Session::stopRequested() const { return impl_->stop_requested.load() && impl_->motion_busy.load(); }
+
+}  // namespace rci::ui
