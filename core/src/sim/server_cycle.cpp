@@ -13,9 +13,12 @@ namespace xmate::sim {
 namespace {
 
 constexpr int64_t kCycleNs = 1'000'000;
-// If the loop falls this far behind wall time (process stopped, machine suspended), it resumes
-// from now instead of running the missed cycles back to back.
-constexpr int64_t kMaxBacklogNs = 50'000'000;
+// The client always gets at least this long to answer a state. If the cycle thread itself was late
+// (preempted, process stopped, machine suspended), the next tick moves to a full cycle from now
+// instead of running the missed cycles back to back: those would give the client no time to answer
+// and blame it for the simulator's own stall (kInstabilityDetection). The stall shows as one long
+// period in the client's statistics, not as lost commands.
+constexpr int64_t kMinAnswerWindowNs = kCycleNs / 2;
 // Lock-step waits are cut into slices so requests, stop() and kill() are served while waiting.
 constexpr int64_t kLockStepSliceNs = 2'000'000;
 
@@ -104,7 +107,15 @@ void awaitAnswer(Server::Impl& s, AnswerSlot& slot, int64_t deadline_ns, bool lo
   for (;;) {
     int64_t now = net::monotonicNs();
     releaseDueDelayedCommands(s, slot, now);
-    if (slot.matched || now >= deadline_ns || s.stopping || s.killed) return;
+    if (slot.matched || s.stopping || s.killed) return;
+    if (now >= deadline_ns) {
+      // Past the deadline: an answer that arrived in time may still sit in the socket because this
+      // thread was late to look (preempted); read what is there without waiting.
+      long n = 0;
+      while (!slot.matched && (n = s.udp.receiveFrom(buffer, sizeof buffer, nullptr, 0)) > 0)
+        receiveDatagram(s, slot, buffer, n, now);
+      return;
+    }
     int64_t until = deadline_ns;
     if (!s.command_faults.delayed.empty()) until = std::min(until, s.command_faults.delayed.front().release_ns);
     if (lockstep) {
@@ -142,7 +153,7 @@ void runOneCycle(Server::Impl& s, int64_t& next_tick_ns) {
   } else {
     next_tick_ns += kCycleNs;
     const int64_t now = net::monotonicNs();
-    if (now - next_tick_ns > kMaxBacklogNs) next_tick_ns = now;
+    if (next_tick_ns - now < kMinAnswerWindowNs) next_tick_ns = now + kCycleNs;
     awaitAnswer(s, slot, next_tick_ns, false);
     net::sleepUntilNs(next_tick_ns);  // an early answer waits for the tick
   }
