@@ -1,0 +1,42 @@
+// ChartCanvas: PlotCanvas on Qt Charts -- one QLineSeries per series, refreshed with a single
+// replace() per frame, software (raster) rendering, value axes set by the caller.
+#pragma once
+
+#include <QHash>
+
+#include "plots/plot_canvas.h"
+
+class QChart;
+class QChartView;
+class QLineSeries;
+class QValueAxis;
+
+namespace rci::ui::plots {
+
+class ChartCanvas : public PlotCanvas {
+ public:
+  explicit ChartCanvas(QWidget* parent = nullptr);
+  ~ChartCanvas() override;
+
+  QWidget* widget() override;
+  void setAxisTitles(const QString& x_title, const QString& y_title) override;
+  void addSeries(int id, const QString& name, const QColor& colour, Qt::PenStyle style) override;
+  void setSeries(int id, const QList<QPointF>& points) override;
+  void setSeriesVisible(int id, bool visible) override;
+  void setXRange(double min, double max) override;
+  void setYRange(double min, double max) override;
+  int plotWidth() const override;
+  int plotHeight() const override;
+  bool isSeriesVisible(int id) const override;
+  QList<QPointF> seriesPoints(int id) const override;
+  int visibleSeriesCount() const override;
+
+ private:
+  QChart* chart_ = nullptr;
+  QChartView* view_ = nullptr;
+  QValueAxis* x_axis_ = nullptr;
+  QValueAxis* y_axis_ = nullptr;
+  QHash<int, QLineSeries*> series_;
+};
+
+}  // namespace rci::ui::plots

@@ -1,0 +1,116 @@
+// PlotsWidget: the live plot area -- three stacked charts over a 62 s recording ring, joint and signal
+// choosers, time window, freeze/resume, CSV export; fed by addSamples(), redrawn on a 30 Hz timer.
+#pragma once
+
+#include <QList>
+#include <QPointF>
+#include <QTimer>
+#include <QWidget>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "client/state_sample.h"
+#include "plots/auto_scale.h"
+#include "plots/decimation.h"
+#include "plots/external_torque.h"
+#include "plots/plot_buffer.h"
+#include "plots/plot_canvas.h"
+
+class QCheckBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+namespace rci::ui::plots {
+
+class PlotsWidget : public QWidget {
+  Q_OBJECT
+ public:
+  static constexpr double kBufferSeconds = 62;  // 60 s window + margin
+  static constexpr double kSampleRateHz = 1000;
+  static constexpr int kMinWindowSeconds = 2;
+  static constexpr int kMaxWindowSeconds = 60;
+  static constexpr int kRedrawIntervalMs = 33;  // ~30 Hz
+  // Drawn lines stay within this many pixels of every min/max point (simplifyWithin).
+  static constexpr double kToleranceInPixels = 0.5;
+
+  enum class ExportScope { kWholeBuffer, kFrozenView };
+
+  explicit PlotsWidget(QWidget* parent = nullptr);
+  ~PlotsWidget() override;
+
+  // Records samples (oldest first). External torques are mapped with the model set below (0 without).
+  void addSamples(const xmate::client::StateSample* samples, int count);
+  // Forgets every sample (a new session restarts the clock).
+  void clear();
+  // The arm's model for tau_ext = J^T F (nullptr: no mapping, external torques shown as 0).
+  void setExternalTorqueMap(std::unique_ptr<ExternalTorqueMap> map);
+  ExternalTorqueMap* externalTorqueMap() { return map_.get(); }
+  // 6 or 7: joint 7 is not offered on 6-axis arms.
+  void setJointCount(int joints);
+
+  void setJointVisible(int joint, bool visible);
+  void setSignalVisible(Signal signal, bool visible);
+  void setWindowSeconds(int seconds);
+  void setFrozen(bool frozen);
+  bool isFrozen() const { return frozen_ != nullptr; }
+
+  // The timer's redraw: skipped while hidden or frozen.
+  void redraw();
+  // Draws now from the live buffer, or from the frozen snapshot when frozen.
+  void redrawNow();
+
+  // kWholeBuffer: every sample held, every signal of the arm's joints. kFrozenView: the frozen
+  // window, the visible series. Returns false with a message (nothing to export, not frozen, I/O).
+  bool exportCsv(const QString& path, ExportScope scope, QString* error) const;
+
+  const PlotBuffer& buffer() const { return buffer_; }
+  PlotCanvas& canvas(Quantity quantity) { return *canvases_[static_cast<std::size_t>(quantity)]; }
+  int visibleSeriesCount() const;
+
+ signals:
+  void frozenChanged(bool frozen);
+
+ private:
+  void buildUi();
+  QWidget* buildJointChooser();
+  QWidget* buildSignalChooser();
+  QWidget* buildViewControls();
+  void declareSeries();
+  void applyVisibility();
+  bool channelVisible(int channel) const;
+  std::vector<int> visibleChannels() const;
+  std::vector<int> allChannels() const;
+  void drawQuantity(Quantity quantity, const PlotBuffer& source, IndexRange range, double x0, double x1);
+  void updateStatus();
+  void updateFreezeControls();
+  void askExport(ExportScope scope);
+
+  PlotBuffer buffer_;
+  std::unique_ptr<PlotBuffer> frozen_;  // snapshot taken at freeze time
+  std::unique_ptr<ExternalTorqueMap> map_;
+  ChannelValues scratch_values_{};
+  std::array<std::unique_ptr<PlotCanvas>, kQuantityCount> canvases_;
+  std::array<AutoScale, kQuantityCount> scales_;
+  MinMaxDecimator decimator_;
+  std::array<QList<QPointF>, kChannelCount> points_;  // this frame's points per series
+  std::array<bool, kJointCount> joint_on_{};
+  std::array<bool, kSignalCount> signal_on_{};
+  int joint_count_ = kJointCount;
+  int window_seconds_ = 10;
+
+  std::array<QCheckBox*, kJointCount> joint_boxes_{};
+  std::array<QCheckBox*, kSignalCount> signal_boxes_{};
+  QSpinBox* window_box_ = nullptr;
+  QPushButton* freeze_button_ = nullptr;
+  QPushButton* export_button_ = nullptr;
+  QLabel* status_ = nullptr;
+  QTimer timer_;
+};
+
+// Series colour of joint j (0-based), shared by the chooser and the charts.
+QColor jointColour(int joint);
+
+}  // namespace rci::ui::plots
