@@ -109,6 +109,7 @@ void Session::Impl::open(const SessionTarget& wanted) {
   target = wanted;
   opening = true;
   const uint64_t my_generation = ++generation;
+  // Hand-off: the target is copied into the opener thread at its start.
   background.start([this, my_generation, wanted] {
     std::shared_ptr<Link> opened;
     QString error;
@@ -176,6 +177,7 @@ void Session::Impl::close(const QString& reason, bool emit_always) {
 
 // Tears the link down on a background thread so a slow controller never blocks the window.
 void Session::Impl::teardown(std::shared_ptr<Link> old) {
+  // Hand-off: the link's ownership moves into the new thread (std::thread start synchronises).
   background.start([old = std::move(old)] { shutdownLink(*old); });
 }
 
@@ -243,6 +245,7 @@ void Session::Impl::startReconnect() {
   emit self.reconnecting(QStringLiteral("No state from %1 for more than 1 s: reconnecting …").arg(target.describe()));
   Link* raw = link.get();
   const uint64_t my_generation = generation;
+  // Hand-off: the command worker's job queue (JobWorker::post).
   link->commands->post([this, raw, my_generation] {
     const bool ok = reconnectLink(*raw);
     // Hand-off: Qt queued invocation of the outcome to the GUI thread.
@@ -318,6 +321,7 @@ void Session::run(const QString& label, std::function<void(xmate::Robot&)> job) 
   }
   xmate::Robot* robot = impl_->link->robot.get();
   const uint64_t my_generation = impl_->generation;
+  // Hand-off: the command worker's job queue (JobWorker::post, mutex + condition variable).
   impl_->link->commands->post([this, robot, my_generation, label, job = std::move(job)] {
     bool ok = true;
     QString message;
@@ -351,6 +355,8 @@ void Session::runMotion(const QString& label, std::function<void(xmate::Robot&)>
   xmate::Robot* robot = impl_->link->robot.get();
   const uint64_t my_generation = impl_->generation;
   emit motionStarted(label);
+  // Hand-off: the motion worker's job queue (JobWorker::post); motion_busy / stop_requested are
+  // atomics shared with the job and the real-time thread's callback.
   impl_->link->motions->post([this, robot, my_generation, label, job = std::move(job)] {
     bool ok = true;
     QString message;

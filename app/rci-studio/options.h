@@ -1,0 +1,19 @@
+// Command-line options of rci-studio: --model, --robot HOST:PORT, --lockstep, --screenshot FILE.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+#include "session/session.h"
+
+struct StudioOptions {
+  rci::ui::SessionTarget target;  // what to connect to at start
+  bool model_given = false;       // --model was on the command line
+  QString screenshot;             // empty: run interactively
+  bool help = false;
+  bool version = false;
+};
+
+// Parses arguments (without argv[0]). false and error set (what was wrong, what to do) on bad input.
+bool parseStudioOptions(const QStringList& arguments, StudioOptions& options, QString& error);
+QString studioUsage();

@@ -1,0 +1,126 @@
+// Jog command generators: ramped velocity along one axis, braking before limits, clean finish.
+#include "panels/jog_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+namespace rci::ui {
+namespace {
+
+RampLimits jointRamp(const xmate::model::RobotSpec& spec, int joint, double speed_fraction) {
+  const double a = kJogJointAccelFraction * spec.ddq_max[joint];
+  return {std::clamp(speed_fraction, 0.01, 1.0) * kJogJointSpeedFraction * spec.dq_max[joint], a,
+          kJogJerkPerAccel * a};
+}
+
+RampLimits cartesianRamp(int axis, double speed_fraction) {
+  const bool linear = axis < 3;
+  const double a = linear ? kJogTranslationAccel : kJogRotationAccel;
+  return {std::clamp(speed_fraction, 0.01, 1.0) * (linear ? kJogTranslationSpeed : kJogRotationSpeed), a,
+          kJogJerkPerAccel * a};
+}
+
+}  // namespace
+
+JointLimitsRad jogLimits(const xmate::model::RobotSpec& spec, bool soft_enabled,
+                         const std::array<double, 7>& soft_lower_deg, const std::array<double, 7>& soft_upper_deg) {
+  constexpr double kRad = 3.14159265358979323846 / 180.0;
+  JointLimitsRad l;
+  for (int i = 0; i < spec.dof; ++i) {
+    double lo = spec.q_min[i], hi = spec.q_max[i];
+    if (soft_enabled) {
+      lo = std::max(lo, soft_lower_deg[i] * kRad);
+      hi = std::min(hi, soft_upper_deg[i] * kRad);
+    }
+    l.lower[i] = lo + kJogLimitMargin;
+    l.upper[i] = hi - kJogLimitMargin;
+  }
+  return l;
+}
+
+JointJog::JointJog(const xmate::model::RobotSpec& spec, int joint, int direction, double speed_fraction,
+                   const JointLimitsRad& limits, const JogFlags& flags)
+    : joint_(joint),
+      direction_(direction >= 0 ? 1 : -1),
+      limits_(limits),
+      flags_(flags),
+      ramp_(jointRamp(spec, joint, speed_fraction)) {}
+
+xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
+  if (!started_) {
+    q_ = state.q;  // at start the command equals the measured position (SPEC.md §5)
+    started_ = true;
+  }
+  const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);
+  double target = go ? direction_ * ramp_.maxVelocity() : 0.0;
+  if (go) {
+    // Brake if, after one more cycle at full drive, stopping would carry the joint past its limit.
+    JogRamp ahead = ramp_;
+    const double moved = ahead.step(target);
+    const double stop_at = q_[joint_] + moved + ahead.stoppingDistance();
+    // Only toward the limit: a joint outside its range may always be jogged back in.
+    if ((direction_ > 0 && stop_at > limits_.upper[joint_]) || (direction_ < 0 && stop_at < limits_.lower[joint_]))
+      target = 0;
+  }
+  q_[joint_] += ramp_.step(target);
+  xmate::JointPositions command{q_};
+  if (!go && ramp_.atRest()) return xmate::MotionFinished(command);
+  return command;
+}
+
+CartesianJog::CartesianJog(int axis, int direction, double speed_fraction, int dof, const JointLimitsRad& limits,
+                           const JogFlags& flags)
+    : axis_(axis),
+      direction_(direction >= 0 ? 1 : -1),
+      dof_(dof),
+      limits_(limits),
+      flags_(flags),
+      ramp_(cartesianRamp(axis, speed_fraction)) {}
+
+bool CartesianJog::jointsNearLimit(const RCI::robot::RobotState& state) const {
+  // Joints keep roughly their present velocity while the TCP stops: a conservative extrapolation.
+  const double horizon = ramp_.stoppingTime() + 0.002;
+  for (int i = 0; i < dof_; ++i) {
+    const double ahead = state.q_c[i] + state.dq_c[i] * horizon;
+    if ((state.dq_c[i] > 0 && ahead > limits_.upper[i]) || (state.dq_c[i] < 0 && ahead < limits_.lower[i]))
+      return true;
+  }
+  return false;
+}
+
+std::array<double, 16> CartesianJog::pose() const {
+  std::array<double, 16> m = start_;
+  const int k = axis_ % 3;
+  if (axis_ < 3) {
+    m[4 * k + 3] += travelled_;
+    return m;
+  }
+  Eigen::Matrix3d r0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r0(i, j) = start_[4 * i + j];
+  // Rotation about the base axis through the TCP.
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(travelled_, Eigen::Vector3d::Unit(k)).toRotationMatrix() * r0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m[4 * i + j] = r(i, j);
+  return m;
+}
+
+xmate::CartesianPose CartesianJog::next(const RCI::robot::RobotState& state) {
+  if (!started_) {
+    start_ = state.toolTobase_pos_m;  // at start the command equals the measured pose
+    started_ = true;
+  }
+  const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);
+  double target = go ? direction_ * ramp_.maxVelocity() : 0.0;
+  if (go && jointsNearLimit(state)) target = 0;
+  travelled_ += ramp_.step(target);
+  xmate::CartesianPose command;
+  command.toolTobase_pos_c = pose();
+  command.psi_valid = false;  // keep the arm angle
+  if (!go && ramp_.atRest()) return xmate::MotionFinished(command);
+  return command;
+}
+
+}  // namespace rci::ui

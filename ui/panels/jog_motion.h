@@ -1,0 +1,81 @@
+// The real-time side of a jog: per-cycle command generators for Robot::Control(). While the jog
+// button is held the axis ramps up to the jog speed; on release (or a stop request) it ramps down
+// and the motion ends with MotionFinished. It brakes on its own before a soft or hardware limit.
+// Runs on the client's real-time thread: no allocation, no locks, no Qt.
+#pragma once
+
+#include <array>
+#include <atomic>
+
+#include <xmate/rci_types.h>
+#include <xmate/types.h>
+
+#include "model/robot_spec.h"
+#include "panels/jog_ramp.h"
+
+namespace rci::ui {
+
+// Jog speeds at 100 % of the speed slider (fractions of the model's limits, SPEC.md §5).
+inline constexpr double kJogJointSpeedFraction = 0.5;    // of dq_max
+inline constexpr double kJogJointAccelFraction = 0.25;   // of ddq_max
+inline constexpr double kJogTranslationSpeed = 0.25;     // m/s
+inline constexpr double kJogTranslationAccel = 0.5;      // m/s^2
+inline constexpr double kJogRotationSpeed = 0.5;         // rad/s
+inline constexpr double kJogRotationAccel = 1.0;         // rad/s^2
+inline constexpr double kJogJerkPerAccel = 10.0;         // jerk = 10/s x acceleration (0.1 s ramps)
+inline constexpr double kJogLimitMargin = 1.0 / 57.29577951308232;  // stay 1 deg inside a joint limit
+
+// Flags shared between the GUI (writes) and the real-time callback (reads).
+struct JogFlags {
+  std::atomic<bool> held{true};   // the jog button is still pressed
+  std::atomic<bool> stop{false};  // stop now (session stop request, panel closing)
+};
+
+struct JointLimitsRad {
+  std::array<double, 7> lower{}, upper{};
+};
+
+// The joint limits a jog must stay inside: the soft limits (degrees) when enabled, within the
+// hardware range, each narrowed by kJogLimitMargin.
+JointLimitsRad jogLimits(const xmate::model::RobotSpec& spec, bool soft_enabled, const std::array<double, 7>& soft_lower_deg,
+                         const std::array<double, 7>& soft_upper_deg);
+
+// Joint jog of one joint: startMove(kJointPosition, kJointPosition) + Control(JointControl).
+class JointJog {
+ public:
+  JointJog(const xmate::model::RobotSpec& spec, int joint, int direction, double speed_fraction,
+           const JointLimitsRad& limits, const JogFlags& flags);
+  xmate::JointPositions next(const RCI::robot::RobotState& state);
+
+ private:
+  int joint_, direction_;
+  JointLimitsRad limits_;
+  const JogFlags& flags_;
+  JogRamp ramp_;
+  bool started_ = false;
+  std::array<double, 7> q_{};
+};
+
+// Cartesian jog of the TCP along or about one base axis (0..2 x, y, z; 3..5 rx, ry, rz):
+// startMove(kCartesianPosition, kCartesianPosition) + Control(CartesianControl). Brakes when the
+// joints (extrapolated from the commanded joint velocities) would reach a limit while stopping.
+class CartesianJog {
+ public:
+  CartesianJog(int axis, int direction, double speed_fraction, int dof, const JointLimitsRad& limits,
+               const JogFlags& flags);
+  xmate::CartesianPose next(const RCI::robot::RobotState& state);
+
+ private:
+  bool jointsNearLimit(const RCI::robot::RobotState& state) const;
+  std::array<double, 16> pose() const;
+
+  int axis_, direction_, dof_;
+  JointLimitsRad limits_;
+  const JogFlags& flags_;
+  JogRamp ramp_;
+  bool started_ = false;
+  std::array<double, 16> start_{};
+  double travelled_ = 0;  // m or rad along the axis
+};
+
+}  // namespace rci::ui

@@ -1,0 +1,67 @@
+// ProgramModel: the Program panel's table of instructions (issue 5) -- owns the teach::Program being
+// edited and offers the edits the panel needs (insert, delete, move, duplicate, type, speed, name,
+// touch-up), drag & drop reordering, and the highlight of the instruction that runs.
+#pragma once
+
+#include <QAbstractTableModel>
+
+#include "teach/program.h"
+
+namespace rci::ui {
+
+class ProgramModel : public QAbstractTableModel {
+  Q_OBJECT
+ public:
+  enum Column { kIndex, kType, kName, kSpeed, kDetails, kColumnCount };
+
+  explicit ProgramModel(QObject* parent = nullptr);
+
+  const xmate::teach::Program& program() const { return program_; }
+  // Replaces the whole program (Open, New); emits edited() only when `as_edit`.
+  void setProgram(const xmate::teach::Program& program, bool as_edit = false);
+  const xmate::teach::Instruction& instruction(int row) const { return program_.instructions[size_t(row)]; }
+  int count() const { return int(program_.instructions.size()); }
+
+  // Edits; each emits edited(). Rows out of range are ignored (false).
+  void insert(int row, const xmate::teach::Instruction& instruction);
+  bool remove(int row);
+  bool move(int from, int to);  // to: the row the instruction ends up at
+  bool duplicate(int row);      // the copy goes right after the original
+  bool replaceTarget(int row, const xmate::teach::Target& target);
+  // MOVEJ <-> MOVEL always; MOVEC -> MOVEJ/MOVEL drops the via point; nothing becomes MOVEC (it needs
+  // a via point: record one as C).
+  static bool canChangeType(const xmate::teach::Instruction& in, xmate::teach::InstructionType to);
+  bool changeType(int row, xmate::teach::InstructionType to);
+
+  // The row shown as running (-1: none).
+  void setCurrent(int row);
+  int current() const { return current_; }
+
+  // "P<n>" with the smallest n not used by a name yet.
+  QString nextName() const;
+  // One line describing an instruction: its targets or its parameters.
+  static QString details(const xmate::teach::Instruction& in);
+
+  // QAbstractTableModel
+  int rowCount(const QModelIndex& parent = {}) const override;
+  int columnCount(const QModelIndex& parent = {}) const override;
+  QVariant data(const QModelIndex& index, int role) const override;
+  QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+  Qt::ItemFlags flags(const QModelIndex& index) const override;
+  bool setData(const QModelIndex& index, const QVariant& value, int role) override;
+  Qt::DropActions supportedDropActions() const override;
+  QStringList mimeTypes() const override;
+  QMimeData* mimeData(const QModelIndexList& indexes) const override;
+  bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                    const QModelIndex& parent) override;
+
+ signals:
+  // The program changed through an edit (not through setProgram(..., false) or setCurrent()).
+  void edited();
+
+ private:
+  xmate::teach::Program program_;
+  int current_ = -1;
+};
+
+}  // namespace rci::ui

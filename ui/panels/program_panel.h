@@ -1,0 +1,176 @@
+// Program panel (issue 5, "In the window"): teach by recording waypoints (button, F9, DI trigger) as
+// MOVEJ / MOVEL / MOVEC, edit the instruction list, go to a waypoint, run / pause / resume / step /
+// stop the program with the teach executor (teach/executor.h) through Session::runMotion, open and
+// save program files, and show the waypoints and the planned path in the 3D view (programOverlay).
+#pragma once
+
+#include <QString>
+
+#include <array>
+#include <functional>
+#include <memory>
+
+#include "panels/panel_base.h"
+#include "teach/executor.h"
+#include "teach/program.h"
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QSlider;
+class QSpinBox;
+class QTableView;
+
+namespace rci::ui {
+
+class ProgramModel;
+
+class ProgramPanel : public PanelBase {
+  Q_OBJECT
+ public:
+  ProgramPanel(Session& session, QWidget* parent);
+  ~ProgramPanel() override;
+
+  // The answers the panel needs from the user, as functions so tests (and scripted use) can avoid
+  // modal dialogs. The defaults show QFileDialog / QMessageBox.
+  enum class UnsavedChoice { kSave, kDiscard, kCancel };
+  struct Dialogs {
+    std::function<QString()> open_path;            // "" = cancelled
+    std::function<QString(const QString&)> save_path;  // argument: suggested path; "" = cancelled
+    std::function<UnsavedChoice()> unsaved;
+  };
+  void setDialogs(Dialogs dialogs);
+
+  // For the window's close (and Open / New): if the program has unsaved changes, asks whether to
+  // save them. True when it is fine to go on (saved, discarded or nothing to save); false when the
+  // user cancelled or the save failed.
+  bool maybeSaveProgram();
+
+  // File operations without dialogs (the buttons use them after asking). Errors go to the status line.
+  bool openFile(const QString& path);
+  bool saveFile(const QString& path);
+  void newProgram();
+
+  bool isModified() const { return modified_; }
+  const QString& filePath() const { return path_; }
+  const xmate::teach::Program& program() const;
+  // The report of the last run or go-to (outcome kIdle before the first).
+  const xmate::teach::RunReport& lastReport() const { return last_report_; }
+  bool isRunning() const { return running_; }
+
+ protected:
+  void refresh(const LiveState& live) override;
+  void sessionOpened() override;
+  void sessionClosed() override;
+  void commandDone(const QString& action, bool ok, const QString& message) override;
+  bool event(QEvent* event) override;
+
+ private:
+  // Layout (program_panel.cpp).
+  QWidget* buildFileRow();
+  QWidget* buildTeachGroup();
+  QWidget* buildListGroup();
+  QWidget* buildRunGroup();
+  void attachShortcut();
+
+  // Teaching and editing (program_panel.cpp).
+  void record();
+  void cancelPendingVia();
+  void addLogic();
+  void logicTypeChanged();
+  void touchUp();
+  void moveSelected(int delta);
+  int selectedRow() const;
+  void selectRow(int row);
+  void programEdited();
+  void updateTitle();
+  void updateButtons();
+  bool haveLiveState() const;
+
+  // Files (program_panel_files.cpp).
+  void openClicked();
+  bool saveClicked();
+  bool saveAsClicked();
+  void newClicked();
+
+  // Running (program_panel_run.cpp).
+  void runClicked();
+  void stepClicked();
+  void pauseClicked();
+  void resumeClicked();
+  void stopClicked();
+  void gotoClicked();
+  void startRun(const xmate::teach::Program& program, bool single_step, const QString& action);
+  xmate::teach::ExecutorOptions executorOptions() const;
+  xmate::teach::TraceOptions traceOptions() const;
+  void runFinished(const QString& label, bool ok, const QString& message);
+  void showReport(const xmate::teach::RunReport& report);
+  void showProblems(const std::vector<xmate::teach::Problem>& problems);
+  void updateProgress();
+  void updateOverlay();
+  std::array<double, 7> currentQ() const;
+
+  ProgramModel* model_ = nullptr;
+  QString path_;
+  bool modified_ = false;
+  Dialogs dialogs_;
+
+  // Teach
+  QComboBox* record_type_ = nullptr;
+  QSpinBox* record_speed_ = nullptr;
+  QPushButton* record_ = nullptr;
+  QComboBox* di_trigger_ = nullptr;
+  QLabel* record_state_ = nullptr;
+  QAction* record_action_ = nullptr;
+  QWidget* shortcut_host_ = nullptr;
+  bool have_via_ = false;
+  xmate::teach::Target via_;
+  bool last_di_ = false;
+  bool di_known_ = false;
+
+  // List
+  QLabel* file_label_ = nullptr;
+  QTableView* list_ = nullptr;
+  QComboBox* logic_type_ = nullptr;
+  QComboBox* logic_signal_ = nullptr;
+  QCheckBox* logic_value_ = nullptr;
+  QSpinBox* logic_ms_ = nullptr;
+  QLabel* logic_ms_label_ = nullptr;
+  QList<QPushButton*> edit_buttons_;   // need a selection, disabled while running
+  QList<QPushButton*> live_buttons_;   // need a selection and the robot's state (touch-up, go to)
+
+  // Run
+  QPushButton* run_ = nullptr;
+  QPushButton* step_ = nullptr;
+  QPushButton* pause_ = nullptr;
+  QPushButton* resume_ = nullptr;
+  QPushButton* stop_ = nullptr;
+  QSlider* speed_ = nullptr;
+  QLabel* speed_label_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* run_state_ = nullptr;
+  QListWidget* problems_ = nullptr;
+
+  // The executor and the result of its run are shared with the motion worker's job, so they outlive
+  // the panel if it is destroyed mid-run.
+  struct RunSlot {
+    xmate::teach::Executor executor;
+    xmate::teach::RunReport report;
+  };
+  std::shared_ptr<RunSlot> run_slot_ = std::make_shared<RunSlot>();
+  QString run_label_;      // the runMotion label of the running job ("" when none)
+  bool running_ = false;
+  bool goto_run_ = false;  // the running job is a go-to (its progress is not the program's)
+  xmate::teach::RunReport last_report_;
+};
+
+// The window's close hook: asks the Program panel under root (if any) to save unsaved changes.
+// False when the user cancelled (the window should stay open). The window may declare the same
+// function in window/parts.h to avoid including this header.
+bool maybeSaveProgram(QWidget* root);
+
+}  // namespace rci::ui

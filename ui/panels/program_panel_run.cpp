@@ -1,0 +1,292 @@
+// Program panel: running the program with the teach executor through Session::runMotion -- run,
+// step, pause, resume, stop, go to a waypoint, the progress display, the pre-flight problems and
+// the 3D view's program overlay (waypoints and planned path).
+#include <QBrush>
+#include <QComboBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSlider>
+#include <QTableView>
+
+#include <algorithm>
+#include <optional>
+
+#include <xmate/model.h>
+
+#include "panels/fields.h"
+#include "panels/lamp.h"
+#include "panels/program_model.h"
+#include "panels/program_panel.h"
+#include "session/session.h"
+#include "teach/recording.h"
+
+namespace rci::ui {
+
+using xmate::teach::RunState;
+
+namespace {
+
+// Go to: a joint move at no more than this speed ratio.
+constexpr double kGotoSpeed = 0.2;
+
+}  // namespace
+
+void ProgramPanel::runClicked() {
+  startRun(program(), false, tr("run"));
+}
+
+void ProgramPanel::stepClicked() {
+  if (running_) {
+    run_slot_->executor.setSingleStep(true);
+    run_slot_->executor.resume();
+    return;
+  }
+  startRun(program(), true, tr("step"));
+}
+
+void ProgramPanel::pauseClicked() {
+  if (running_) run_slot_->executor.pause();
+}
+
+void ProgramPanel::resumeClicked() {
+  if (!running_) return;
+  run_slot_->executor.setSingleStep(false);
+  run_slot_->executor.resume();
+}
+
+void ProgramPanel::stopClicked() {
+  if (running_) run_slot_->executor.stop();
+}
+
+void ProgramPanel::gotoClicked() {
+  const int row = selectedRow();
+  if (row < 0 || !xmate::teach::isMotion(model_->instruction(row).type)) {
+    showStatus(tr("Go to: select a move instruction first."), true);
+    return;
+  }
+  const auto& in = model_->instruction(row);
+  xmate::teach::Program one;
+  one.robot = program().robot;
+  one.instructions.push_back(xmate::teach::moveJ(in.target, std::min(in.speed, kGotoSpeed), in.name));
+  startRun(one, false, tr("go to instruction %1").arg(row + 1));
+}
+
+void ProgramPanel::startRun(const xmate::teach::Program& program, bool single_step, const QString& action) {
+  if (running_) {
+    showStatus(tr("%1: a run is already active.").arg(action), true);
+    return;
+  }
+  if (!isOpen()) {
+    showStatus(tr("%1: not connected -- connect to a robot or the simulator first.").arg(action), true);
+    return;
+  }
+  xmate::teach::ExecutorOptions options = executorOptions();
+  options.single_step = single_step;
+  options.speed_override = speed_->value() / 100.0;
+  running_ = true;
+  goto_run_ = action.startsWith(tr("go to"));
+  run_label_ = title() + QStringLiteral(": ") + action;
+  run_state_->setText(tr("Starting: %1").arg(action));
+  progress_->setValue(0);
+  progress_->setFormat(goto_run_ ? tr("Go to: %p %") : tr("Checking"));
+  showStatus(action + QStringLiteral(" ..."), false);
+  updateButtons();
+  std::shared_ptr<RunSlot> slot = run_slot_;
+  session().runMotion(run_label_, [slot, program, options](xmate::Robot& robot) {
+    slot->report = slot->executor.run(robot, program, options);
+  });
+}
+
+xmate::teach::ExecutorOptions ProgramPanel::executorOptions() const {
+  xmate::teach::ExecutorOptions options;
+  const OperatorSettings& s = session().operatorSettings();
+  if (s.soft_limits_enabled) {
+    options.has_soft_limits = true;
+    for (size_t j = 0; j < 7; ++j) {
+      options.soft_lower[j] = s.soft_lower_deg[j] / kDegPerRad;
+      options.soft_upper[j] = s.soft_upper_deg[j] / kDegPerRad;
+    }
+  }
+  if (s.box.enabled) {
+    options.has_box = true;
+    options.box.size = s.box.size;
+    options.box.frame = s.box.frame;
+  }
+  return options;
+}
+
+xmate::teach::TraceOptions ProgramPanel::traceOptions() const {
+  const xmate::teach::ExecutorOptions e = executorOptions();
+  xmate::teach::TraceOptions options;
+  options.q_start = currentQ();
+  if (auto* robot = session().robot()) options.tool = robot->toolFrame();
+  options.has_soft_limits = e.has_soft_limits;
+  options.soft_lower = e.soft_lower;
+  options.soft_upper = e.soft_upper;
+  options.has_box = e.has_box;
+  options.box = e.box;
+  return options;
+}
+
+std::array<double, 7> ProgramPanel::currentQ() const {
+  if (isOpen() && session().live().has_state) return session().live().state.q;
+  return {};
+}
+
+void ProgramPanel::commandDone(const QString& action, bool ok, const QString&) {
+  // runMotion refuses (e.g. another motion runs) with commandFinished and no motionFinished.
+  if (!ok && running_ && title() + QStringLiteral(": ") + action == run_label_) {
+    running_ = false;
+    run_label_.clear();
+    run_state_->setText(tr("Not started"));
+    progress_->setFormat(tr("Idle"));
+    updateButtons();
+  }
+}
+
+void ProgramPanel::runFinished(const QString& label, bool ok, const QString& message) {
+  if (!running_ || label != run_label_) return;
+  const QString action = label.mid(title().size() + 2);
+  running_ = false;
+  run_label_.clear();
+  model_->setCurrent(-1);
+  updateOverlay();  // from where the robot is now
+  if (!ok) {
+    run_state_->setText(tr("Failed"));
+    progress_->setFormat(tr("Failed"));
+    showStatus(tr("%1 failed: %2").arg(action, message), true);
+  } else {
+    last_report_ = run_slot_->report;
+    showReport(last_report_);
+  }
+  updateButtons();
+}
+
+void ProgramPanel::showReport(const xmate::teach::RunReport& report) {
+  const QString what = goto_run_ ? tr("Go to") : tr("Run");
+  const QString message = QString::fromStdString(report.message);
+  run_state_->setText(QString::fromLatin1(xmate::teach::runStateName(report.outcome)));
+  switch (report.outcome) {
+    case RunState::kFinished:
+      progress_->setValue(1000);
+      progress_->setFormat(tr("Done"));
+      showStatus(tr("%1 finished in %2 s.").arg(what).arg(report.duration, 0, 'f', 1), false);
+      break;
+    case RunState::kStopped:
+      progress_->setFormat(tr("Stopped"));
+      showStatus(tr("%1 stopped%2.").arg(what, message.isEmpty() ? QString() : QStringLiteral(": ") + message), false);
+      break;
+    case RunState::kRefused:
+      progress_->setValue(0);
+      progress_->setFormat(tr("Refused"));
+      showProblems(report.problems);
+      showStatus(tr("%1 refused by the pre-flight, nothing moved: %n problem(s), listed below.", nullptr,
+                    int(report.problems.size()))
+                     .arg(what) +
+                     (report.problems.empty() ? QStringLiteral(" ") + message : QString()),
+                 true);
+      break;
+    default:
+      progress_->setFormat(tr("Failed"));
+      showStatus(tr("%1 failed: %2").arg(what, message), true);
+      if (report.failed_instruction >= 0 && !goto_run_) selectRow(int(report.failed_instruction));
+      break;
+  }
+}
+
+void ProgramPanel::showProblems(const std::vector<xmate::teach::Problem>& problems) {
+  problems_->clear();
+  for (const auto& p : problems) {
+    auto* item = new QListWidgetItem(QString::fromStdString(p.message), problems_);
+    item->setData(Qt::UserRole, int(p.instruction));
+    item->setForeground(QBrush(lampRed()));
+  }
+}
+
+void ProgramPanel::updateProgress() {
+  if (!running_) return;
+  if (session().stopRequested()) run_slot_->executor.stop();  // the window's Stop
+  const xmate::teach::Progress p = run_slot_->executor.progress();
+  run_state_->setText(QString::fromLatin1(xmate::teach::runStateName(p.state)));
+  if (p.instruction < 0) return;
+  const double fraction = std::clamp(p.fraction, 0.0, 1.0);
+  if (goto_run_) {
+    progress_->setValue(int(fraction * 1000));
+    progress_->setFormat(tr("Go to: %1 %").arg(int(fraction * 100)));
+    return;
+  }
+  const int n = model_->count();
+  progress_->setValue(int((double(p.instruction) + fraction) / std::max(n, 1) * 1000));
+  progress_->setFormat(tr("Instruction %1 of %2: %3 %").arg(p.instruction + 1).arg(n).arg(int(fraction * 100)));
+  model_->setCurrent(int(p.instruction));
+}
+
+void ProgramPanel::refresh(const LiveState& live) {
+  updateProgress();
+  updateButtons();
+  const int di = di_trigger_->currentData().toInt();
+  if (di < 0 || di >= int(live.digital_in.size())) return;
+  const bool level = live.digital_in[size_t(di)];
+  const bool rising = di_known_ && level && !last_di_;
+  last_di_ = level;
+  di_known_ = true;
+  if (rising && record_->isEnabled()) record();
+}
+
+void ProgramPanel::sessionOpened() {
+  di_known_ = false;
+  if (model_->count() == 0) newProgram();
+  updateButtons();
+  updateOverlay();
+}
+
+void ProgramPanel::sessionClosed() {
+  // A run cannot outlive its session: the session stopped the motion worker's robot.
+  if (running_) {
+    running_ = false;
+    run_label_.clear();
+    model_->setCurrent(-1);
+    run_state_->setText(tr("Ended: the connection closed"));
+  }
+  cancelPendingVia();
+  updateButtons();
+}
+
+void ProgramPanel::updateOverlay() {
+  const auto& p = program();
+  ProgramOverlay overlay;
+  const xmate::teach::TraceOptions options = traceOptions();
+  std::optional<xmate::XmateModel> model;  // for targets taught as joints only
+  auto position = [&](const xmate::teach::Target& t) -> std::array<double, 3> {
+    if (t.has_pose) return {t.pose[3], t.pose[7], t.pose[11]};
+    if (!model) {
+      model.emplace(p.robot);
+      model->SetCoor(options.tool);
+    }
+    const auto pose = model->GetCartPose(t.q);
+    return {pose[3], pose[7], pose[11]};
+  };
+  const int selected = selectedRow();
+  for (size_t i = 0; i < p.instructions.size(); ++i) {
+    const auto& in = p.instructions[i];
+    if (!xmate::teach::isMotion(in.type)) continue;
+    const QString name = in.name.empty() ? QStringLiteral("#%1").arg(i + 1) : QString::fromStdString(in.name);
+    if (in.type == xmate::teach::InstructionType::kMoveC) {
+      overlay.waypoints.push_back(position(in.via));
+      overlay.labels.push_back(name + tr(" via"));
+    }
+    if (int(i) == selected) overlay.selected = int(overlay.waypoints.size());
+    overlay.waypoints.push_back(position(in.target));
+    overlay.labels.push_back(name);
+  }
+  // The planned path and the pre-flight start where the robot is: only with its state.
+  xmate::teach::ProgramTrace trace;
+  if (haveLiveState()) trace = xmate::teach::traceProgram(p, options);
+  for (const auto& t : trace.instructions) overlay.path.insert(overlay.path.end(), t.tcp_path.begin(), t.tcp_path.end());
+  session().setProgramOverlay(overlay);
+  if (!running_) showProblems(trace.problems);
+}
+
+}  // namespace rci::ui

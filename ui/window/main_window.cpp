@@ -1,0 +1,270 @@
+// The main window's assembly, connection flow and layout persistence (main_window.h).
+#include "window/main_window.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <map>
+
+#include "window/banner.h"
+#include "window/connection_bar.h"
+#include "window/message_log.h"
+#include "window/parts.h"
+#include "window/status_strip.h"
+#include "window/target_settings.h"
+
+// The window's resources live in the static rci_ui library: register them once, explicitly.
+static void initWindowResources() {
+  static const bool registered = [] {
+    Q_INIT_RESOURCE(rci_window);
+    return true;
+  }();
+  (void)registered;
+}
+
+namespace rci::ui {
+namespace {
+
+constexpr int kLayoutVersion = 1;
+
+QSettings windowSettings() { return QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")); }
+
+// Panels and plots scroll inside their dock, so a tall one never forces the window taller than the screen.
+QWidget* scrollable(QWidget* panel) {
+  auto* area = new QScrollArea;
+  area->setObjectName(panel->objectName() + QStringLiteral(".scroll"));
+  area->setWidget(panel);
+  area->setWidgetResizable(true);
+  area->setFrameShape(QFrame::NoFrame);
+  area->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+  return area;
+}
+
+}  // namespace
+
+QIcon applicationIcon() {
+  initWindowResources();
+  QIcon icon;
+  icon.addFile(QStringLiteral(":/icons/rci-studio-48.png"));
+  icon.addFile(QStringLiteral(":/icons/rci-studio-256.png"));
+  icon.addFile(QStringLiteral(":/icons/rci-studio.svg"));  // used where the SVG image plugin exists
+  return icon;
+}
+
+MainWindow::MainWindow(Session& session, QWidget* parent) : QMainWindow(parent), session_(session) {
+  initWindowResources();
+  setObjectName(QStringLiteral("mainWindow"));
+  setWindowIcon(applicationIcon());
+  setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
+  // Side panels get vertical tabs on the outer edge (full names, however many); the plots span
+  // the whole width at the bottom.
+  setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
+  setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
+  setTabPosition(Qt::BottomDockWidgetArea, QTabWidget::North);
+  setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
+  setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+
+  bar_ = new ConnectionBar(this);
+  addToolBar(Qt::TopToolBarArea, bar_);
+  buildCentre();
+  buildDocks();
+  strip_ = new StatusStrip(session_, statusBar());
+  buildMenus();
+  connectSession();
+
+  resize(1600, 1000);
+  default_state_ = saveState(kLayoutVersion);
+  restoreLayout();
+  if (std::optional<SessionTarget> last = lastTarget()) bar_->setTarget(*last);
+  if (std::optional<QString> ini = robotFromIni()) {
+    bar_->setRobotAddress(*ini);
+    log_->addInfo(tr("Robot address %1 read from xmate.ini").arg(*ini));
+  }
+  updateTitle();
+}
+
+void MainWindow::buildCentre() {
+  auto* centre = new QWidget(this);
+  auto* layout = new QVBoxLayout(centre);
+  layout->setContentsMargins(4, 4, 4, 0);
+  layout->setSpacing(4);
+  banner_ = new Banner(centre);
+  view_ = createRobotView(session_, centre);
+  view_->setMinimumSize(320, 240);
+  layout->addWidget(banner_);
+  layout->addWidget(view_, 1);
+  setCentralWidget(centre);
+}
+
+QDockWidget* MainWindow::addDock(const QString& id, const QString& title, QWidget* widget, Qt::DockWidgetArea area) {
+  // Dock tabs read '&' as a mnemonic marker: double it so "Tool & payload" shows as written.
+  auto* dock = new QDockWidget(QString(title).replace(QLatin1Char('&'), QLatin1String("&&")), this);
+  dock->setObjectName(id);
+  dock->setWidget(widget);
+  connect(dock, &QDockWidget::dockLocationChanged, this, [this] { QTimer::singleShot(0, this, [this] { showFullTabNames(); }); });
+  dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  addDockWidget(area, dock);
+  docks_.push_back(dock);
+  return dock;
+}
+
+void MainWindow::buildDocks() {
+  QWidget* plots_widget = createPlotsWidget(session_, this);
+  if (plots_widget->objectName().isEmpty()) plots_widget->setObjectName(QStringLiteral("plots"));
+  QDockWidget* plots = addDock(QStringLiteral("dock.plots"), tr("Live plots"), scrollable(plots_widget),
+                               Qt::BottomDockWidgetArea);
+  log_ = new MessageLog(session_, this);
+  QDockWidget* messages = addDock(QStringLiteral("dock.messages"), tr("Messages"), log_, Qt::BottomDockWidgetArea);
+  tabifyDockWidget(plots, messages);
+
+  // The first panel of each area; the others are tabbed with it.
+  std::map<Qt::DockWidgetArea, QDockWidget*> first;
+  first[Qt::BottomDockWidgetArea] = plots;
+  for (const PanelSpec& spec : createPanels(session_, this)) {
+    QDockWidget* dock = addDock(spec.id, spec.title, scrollable(spec.widget), spec.area);
+    auto [it, inserted] = first.emplace(spec.area, dock);
+    if (!inserted) tabifyDockWidget(it->second, dock);
+  }
+  for (const auto& [area, dock] : first) dock->raise();
+  if (first.count(Qt::LeftDockWidgetArea)) resizeDocks({first[Qt::LeftDockWidgetArea]}, {450}, Qt::Horizontal);
+  if (first.count(Qt::RightDockWidgetArea)) resizeDocks({first[Qt::RightDockWidgetArea]}, {420}, Qt::Horizontal);
+  resizeDocks({plots}, {380}, Qt::Vertical);
+}
+
+void MainWindow::buildMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+  quit->setShortcut(QKeySequence::Quit);
+
+  QMenu* connection = menuBar()->addMenu(tr("&Connection"));
+  connection->addAction(tr("&Connect to the built-in simulator"), this, [this] {
+    SessionTarget target;
+    target.type = session_.target().type;
+    target.loopback = true;
+    connectTo(target);
+  });
+  connection->addAction(tr("&Disconnect"), this, [this] { disconnectFromTarget(); });
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  view->addAction(bar_->toggleViewAction());
+  view->addSeparator();
+  for (QDockWidget* dock : docks_) view->addAction(dock->toggleViewAction());
+  view->addSeparator();
+  view->addAction(tr("&Reset layout"), this, [this] { resetLayout(); });
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&About RCI Studio"), this, [this] {
+    QMessageBox::about(this, tr("About RCI Studio"),
+                       tr("<h3>RCI Studio %1</h3><p>Watch, teach and control ROKAE xMate robots over the RCI "
+                          "real-time interface, or the built-in simulator.</p>")
+                           .arg(QApplication::applicationVersion()));
+  });
+}
+
+void MainWindow::connectSession() {
+  connect(bar_, &ConnectionBar::connectRequested, this, [this](const SessionTarget& target) { connectTo(target); });
+  connect(bar_, &ConnectionBar::disconnectRequested, this, [this] { disconnectFromTarget(); });
+  connect(bar_, &ConnectionBar::inputRefused, this, [this](const QString& reason) {
+    banner_->showError(reason);
+    log_->addError(reason);
+  });
+  connect(&session_, &Session::opened, this, [this] {
+    bar_->setState(ConnectionBar::State::kConnected);
+    banner_->hide();
+    strip_->refresh();
+    updateTitle();
+  });
+  connect(&session_, &Session::openFailed, this, [this](const QString& reason) {
+    bar_->setState(ConnectionBar::State::kDisconnected);
+    banner_->showError(reason);
+    strip_->refresh();
+    updateTitle();
+  });
+  connect(&session_, &Session::closed, this, [this](const QString& reason) {
+    bar_->setState(ConnectionBar::State::kDisconnected);
+    if (!reason.isEmpty()) banner_->showError(reason);
+    strip_->refresh();
+    updateTitle();
+  });
+  connect(&session_, &Session::tick, strip_, &StatusStrip::refresh);
+}
+
+void MainWindow::connectTo(const SessionTarget& target) {
+  bar_->setTarget(target);
+  if (target.kind == SessionTarget::Kind::kRobot) {
+    rememberRobot(QStringLiteral("%1:%2").arg(target.host).arg(target.port));
+    bar_->refreshRecent();
+  }
+  saveLastTarget(target);
+  banner_->hide();
+  session_.open(target);
+  bar_->setState(ConnectionBar::State::kConnecting);
+  strip_->showConnecting();
+  log_->addInfo(tr("Connecting to %1 …").arg(target.describe()));
+  updateTitle();
+}
+
+void MainWindow::disconnectFromTarget() {
+  const bool was_opening = session_.isOpening();
+  session_.close();
+  if (was_opening) log_->addInfo(tr("Connection cancelled"));
+  bar_->setState(ConnectionBar::State::kDisconnected);
+  strip_->refresh();
+  updateTitle();
+}
+
+void MainWindow::updateTitle() {
+  QString title = QStringLiteral("RCI Studio");
+  if (session_.isOpen()) title += QStringLiteral(" — ") + session_.target().describe();
+  setWindowTitle(title);
+}
+
+void MainWindow::restoreLayout() {
+  QSettings s = windowSettings();
+  const QByteArray geometry = s.value(QStringLiteral("window/geometry")).toByteArray();
+  if (!geometry.isEmpty()) restoreGeometry(geometry);
+  const QByteArray state = s.value(QStringLiteral("window/state")).toByteArray();
+  if (!state.isEmpty()) restoreState(state, kLayoutVersion);
+}
+
+void MainWindow::saveLayout() {
+  QSettings s = windowSettings();
+  s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  s.setValue(QStringLiteral("window/state"), saveState(kLayoutVersion));
+}
+
+void MainWindow::resetLayout() {
+  restoreState(default_state_, kLayoutVersion);
+  for (QDockWidget* dock : docks_) dock->setFloating(false);
+  showFullTabNames();
+}
+
+// The dock tab bars are made by the main window's layout; let them scroll instead of eliding names.
+void MainWindow::showFullTabNames() {
+  for (QTabBar* tabs : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+    tabs->setElideMode(Qt::ElideNone);
+    tabs->setUsesScrollButtons(true);
+  }
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  showFullTabNames();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  saveLayout();
+  session_.close();
+  event->accept();
+}
+
+}  // namespace rci::ui

@@ -1,0 +1,67 @@
+// MainWindow: "RCI Studio" -- the 3D view in the centre, live plots and messages at the bottom,
+// the panels in tabbed docks, the connection toolbar, the status bar. Persists its layout and last
+// target (QSettings "RCI Studio"/"rci-studio"). The Session is owned by the caller and outlives it.
+#pragma once
+
+#include <QIcon>
+#include <QMainWindow>
+
+#include <vector>
+
+#include "session/session.h"
+
+class QDockWidget;
+
+namespace rci::ui {
+
+class Banner;
+class ConnectionBar;
+class MessageLog;
+class StatusStrip;
+
+// The RCI Studio icon (PNG sizes and the SVG), from the window's Qt resources.
+QIcon applicationIcon();
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit MainWindow(Session& session, QWidget* parent = nullptr);
+
+  // Shows target in the connection bar and connects to it (saves it as the last target).
+  void connectTo(const SessionTarget& target);
+  void disconnectFromTarget();
+
+  Session& session() { return session_; }
+  QWidget* robotView() const { return view_; }
+  MessageLog* messageLog() const { return log_; }
+  Banner* banner() const { return banner_; }
+  ConnectionBar* connectionBar() const { return bar_; }
+  const std::vector<QDockWidget*>& docks() const { return docks_; }
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
+
+ private:
+  void buildCentre();
+  QDockWidget* addDock(const QString& id, const QString& title, QWidget* widget, Qt::DockWidgetArea area);
+  void buildDocks();
+  void buildMenus();
+  void connectSession();
+  void restoreLayout();
+  void saveLayout();
+  void resetLayout();
+  void updateTitle();
+  void showFullTabNames();
+
+  Session& session_;
+  QWidget* view_ = nullptr;
+  Banner* banner_ = nullptr;
+  ConnectionBar* bar_ = nullptr;
+  MessageLog* log_ = nullptr;
+  StatusStrip* strip_ = nullptr;
+  std::vector<QDockWidget*> docks_;
+  QByteArray default_state_;
+};
+
+}  // namespace rci::ui

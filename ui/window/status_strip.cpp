@@ -1,0 +1,143 @@
+// The status bar fields (status_strip.h).
+#include "window/status_strip.h"
+
+#include <QFrame>
+#include <QLabel>
+#include <QStatusBar>
+
+#include "client/error_bits.h"
+#include "session/session.h"
+
+namespace rci::ui {
+namespace {
+
+const char* const kNormal = "";
+const char* const kGood = "color: #1b7a2e;";
+const char* const kBad = "color: #c62828; font-weight: 600;";
+const char* const kWarn = "color: #b26a00;";
+
+void setField(QLabel* label, const QString& text, const char* style) {
+  label->setText(text);
+  const QString sheet = QString::fromLatin1(style);
+  if (label->styleSheet() != sheet) label->setStyleSheet(sheet);
+}
+
+QStringList activeErrorNames(const RCI::robot::RobotState& state) {
+  QStringList names;
+  for (int bit = 0; bit < xmate::client::kErrorBitCount; ++bit)
+    if (state.errors[size_t(bit)]) names << QString::fromLatin1(xmate::client::errorBitName(bit));
+  return names;
+}
+
+}  // namespace
+
+QString robotModeText(RCI::robot::RobotMode mode) {
+  using RCI::robot::RobotMode;
+  switch (mode) {
+    case RobotMode::kIdle: return QObject::tr("Idle");
+    case RobotMode::kMove: return QObject::tr("Moving");
+    case RobotMode::kGuiding: return QObject::tr("Hand guiding");
+    case RobotMode::kReflex: return QObject::tr("Reflex (stopped on error)");
+    case RobotMode::kUserStopped: return QObject::tr("User stopped");
+    case RobotMode::kAutomaticErrorRecovery: return QObject::tr("Error recovery");
+    case RobotMode::kOther: break;
+  }
+  return QObject::tr("Other");
+}
+
+StatusStrip::StatusStrip(Session& session, QStatusBar* bar) : QObject(bar), session_(session), bar_(bar) {
+  target_ = field("status.target", tr("What this window is connected to"));
+  mode_ = field("status.mode", tr("The controller's robot mode (RobotState::robot_mode)"));
+  motors_ = field("status.motors", tr("Motor power as reported by the controller"));
+  realtime_ = field("status.realtime", QString());
+  rate_ = field("status.rate", tr("States received per second (nominal 1000 Hz)"));
+  jitter_ = field("status.jitter", tr("99th percentile of |period - 1 ms| between received states"));
+  success_ = field("status.success", tr("Share of the last 100 motion commands that reached the controller in time"));
+  errors_ = field("status.errors", QString());
+  refresh();
+}
+
+// Each field after the first is separated from the previous one by a thin vertical rule.
+QLabel* StatusStrip::field(const char* name, const QString& tooltip) {
+  if (target_ != nullptr) {  // target_ is the first field
+    auto* rule = new QFrame(bar_);
+    rule->setObjectName(QString::fromLatin1(name) + QStringLiteral(".rule"));
+    rule->setFrameShape(QFrame::VLine);
+    rule->setFrameShadow(QFrame::Sunken);
+    bar_->addPermanentWidget(rule);
+  }
+  auto* label = new QLabel(bar_);
+  label->setContentsMargins(6, 0, 6, 0);
+  label->setObjectName(QString::fromLatin1(name));
+  label->setToolTip(tooltip);
+  bar_->addPermanentWidget(label);
+  return label;
+}
+
+void StatusStrip::showConnecting() {
+  setField(target_, tr("Connecting to %1 …").arg(session_.target().describe()), kWarn);
+}
+
+void StatusStrip::refresh() {
+  if (session_.isOpen()) {
+    refreshOpen();
+  } else if (!session_.isOpening()) {
+    refreshClosed();
+  }
+}
+
+void StatusStrip::refreshClosed() {
+  setField(target_, tr("Not connected"), kBad);
+  for (QLabel* label : {mode_, motors_, realtime_, rate_, jitter_, success_, errors_}) label->clear();
+  realtime_->setToolTip(QString());
+  errors_->setVisible(false);
+  errorsRule()->setVisible(false);
+}
+
+QFrame* StatusStrip::errorsRule() const { return bar_->findChild<QFrame*>(QStringLiteral("status.errors.rule")); }
+
+void StatusStrip::refreshOpen() {
+  const LiveState& live = session_.live();
+  if (session_.isReconnecting()) {
+    setField(target_, tr("%1 — reconnecting …").arg(session_.target().describe()), kBad);
+    return;
+  }
+  setField(target_, session_.target().describe(), kNormal);
+  if (!live.has_state) {
+    setField(mode_, tr("Waiting for the first state …"), kWarn);
+    return;
+  }
+  const RCI::robot::RobotState& state = live.state;
+  const bool reflex = state.robot_mode == RCI::robot::RobotMode::kReflex;
+  setField(mode_, tr("Mode: %1").arg(robotModeText(state.robot_mode)), reflex ? kBad : kNormal);
+  setField(motors_, live.motor_state == 1 ? tr("Motors on") : tr("Motors off"), live.motor_state == 1 ? kGood : kNormal);
+
+  const bool fifo = live.realtime.fifo;
+  setField(realtime_, fifo ? tr("RT: SCHED_FIFO %1").arg(live.realtime.priority) : tr("RT: normal priority"),
+           fifo ? kGood : kWarn);
+  realtime_->setToolTip(fifo ? QString::fromStdString(live.realtime.describe())
+                             : tr("The client's real-time thread runs at normal priority: %1")
+                                   .arg(QString::fromStdString(live.realtime.reason)));
+
+  setField(rate_, tr("%1 Hz").arg(live.loop_rate_hz, 0, 'f', 0), live.loop_rate_hz < 900 && live.loop_rate_hz > 0 ? kWarn : kNormal);
+  setField(jitter_, tr("Jitter p99 %1 µs").arg(live.timing.period.jitter_p99_us, 0, 'f', 0), kNormal);
+  const bool moving = live.motion_running || state.robot_mode == RCI::robot::RobotMode::kMove;
+  if (moving) {
+    const double percent = state.control_command_success_rate * 100.0;
+    setField(success_, tr("Commands %1 %").arg(percent, 0, 'f', 0), percent < 95 ? kBad : kNormal);
+  } else {
+    setField(success_, tr("Commands –"), kNormal);
+  }
+
+  const QStringList errors = activeErrorNames(state);
+  errors_->setVisible(!errors.isEmpty() || live.safety_stop != 1);
+  errorsRule()->setVisible(errors_->isVisibleTo(bar_));
+  QString text;
+  if (live.safety_stop == 2) text = tr("EMERGENCY STOP");
+  if (live.safety_stop == 3) text = tr("GUARD STOP");
+  if (!errors.isEmpty()) text += (text.isEmpty() ? QString() : QStringLiteral("  ")) + tr("Errors: %1").arg(errors.join(", "));
+  setField(errors_, text, kBad);
+  errors_->setToolTip(QString::fromStdString(xmate::client::describeErrors(state.errors)));
+}
+
+}  // namespace rci::ui
