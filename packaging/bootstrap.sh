@@ -1,6 +1,6 @@
 #!/bin/sh
 # The README's two commands:
-#   packaging/bootstrap.sh run    install what is missing, build, start RCI Studio on the built-in simulator
+#   packaging/bootstrap.sh run    install what is missing, build, start RCI Studio (rci-studio) on the built-in simulator
 #   packaging/bootstrap.sh test   install what is missing, build, run every test
 # Build trees: build/ (RelWithDebInfo); the test command also uses build-asan/ (ASan + UBSan) and
 # build-fuzz/ (clang, libFuzzer).
@@ -21,7 +21,7 @@ case "$mode" in
   run)
     configure build -DCMAKE_BUILD_TYPE=RelWithDebInfo
     cmake --build build -j "$jobs"
-    exec build/app/rci-cli/rci-cli
+    exec build/app/rci-studio/rci-studio
     ;;
   test)
     configure build -DCMAKE_BUILD_TYPE=RelWithDebInfo

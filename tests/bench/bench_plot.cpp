@@ -1,5 +1,5 @@
 // rci-bench-plot: ms per redraw frame of the live plots (7 joints x 3 signals, 1 kHz, 10 s window) against
-// the naive replace-all-raw-points path, and CPU share while streaming. Results: docs/performance_plots.md.
+// the naive replace-all-raw-points path, and CPU share while streaming. Results: docs/performance.md ("Live plots").
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
