@@ -125,7 +125,7 @@ QWidget* ProgramPanel::buildFileRow() {
   file_label_->setFont(bold);
   auto* new_button = makeButton(QStringLiteral("program.new"), tr("New"), tr("Start an empty program"), box);
   auto* open = makeButton(QStringLiteral("program.open"), tr("Open..."), tr("Open a program file (JSON)"), box);
-  auto* save = makeButton(QStringLiteral("program.save"), tr("Save"), tr("Save the program (Ctrl+S)"), box);
+  auto* save = makeButton(QStringLiteral("program.save"), tr("Save"), tr("Save the program to its file (asks for a name the first time)"), box);
   auto* save_as = makeButton(QStringLiteral("program.saveAs"), tr("Save as..."), tr("Save the program under a new name"), box);
   row->addWidget(file_label_, 1);
   for (auto* b : {new_button, open, save, save_as}) row->addWidget(b);
@@ -184,7 +184,7 @@ QWidget* ProgramPanel::buildTeachGroup() {
   });
   connect(record_, &QPushButton::clicked, this, &ProgramPanel::record);
   connect(record_type_, &QComboBox::currentIndexChanged, this, &ProgramPanel::cancelPendingVia);
-  connect(di_trigger_, &QComboBox::currentIndexChanged, this, [this] { di_known_ = false; });
+  connect(di_trigger_, &QComboBox::currentIndexChanged, this, &ProgramPanel::resetDiTrigger);
   connect(record_speed_, &QSpinBox::valueChanged, this, [this](int v) { saveValue(QStringLiteral("recordSpeed"), v); });
   return group;
 }
@@ -202,11 +202,11 @@ QWidget* ProgramPanel::buildListGroup() {
   list_->setDropIndicatorShown(true);
   list_->setDragDropMode(QAbstractItemView::InternalMove);
   list_->setDefaultDropAction(Qt::MoveAction);
-  list_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
-                         QAbstractItemView::SelectedClicked);
+
   list_->verticalHeader()->hide();
   list_->horizontalHeader()->setStretchLastSection(true);
-  list_->horizontalHeader()->setSectionResizeMode(ProgramModel::kIndex, QHeaderView::ResizeToContents);
+  for (int column : {ProgramModel::kIndex, ProgramModel::kType, ProgramModel::kSpeed})
+    list_->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
   list_->setItemDelegateForColumn(ProgramModel::kType, new TypeDelegate(list_));
   list_->setItemDelegateForColumn(ProgramModel::kSpeed, new SpeedDelegate(list_));
   list_->setMinimumHeight(200);
@@ -426,6 +426,13 @@ void ProgramPanel::record() {
              false);
 }
 
+void ProgramPanel::resetDiTrigger() {
+  // The level now is the reference: only a later rising edge records.
+  const int di = di_trigger_->currentData().toInt();
+  di_known_ = haveLiveState() && di >= 0 && di < xmate::teach::kSignalCount;
+  if (di_known_) last_di_ = session().live().digital_in[size_t(di)];
+}
+
 void ProgramPanel::cancelPendingVia() {
   if (!have_via_) return;
   have_via_ = false;
@@ -525,6 +532,11 @@ void ProgramPanel::updateButtons() {
   edit_buttons_[1]->setEnabled(row >= 0 && row + 1 < model_->count() && !running_);
   for (auto* b : live_buttons_) b->setEnabled(motion && haveLiveState() && !running_);
   record_->setEnabled(haveLiveState() && !running_);
+  // The list is read-only while a run highlights its instructions.
+  list_->setEditTriggers(running_ ? QAbstractItemView::NoEditTriggers
+                                  : QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                                        QAbstractItemView::SelectedClicked);
+  list_->setDragEnabled(!running_);
   run_->setEnabled(isOpen() && model_->count() > 0 && !running_);
   step_->setEnabled(isOpen() && model_->count() > 0 && (!running_ || (paused && !goto_run_)));
   pause_->setEnabled(moving);

@@ -80,6 +80,7 @@ class ProgramPanel : public PanelBase {
   // Teaching and editing (program_panel.cpp).
   void record();
   void cancelPendingVia();
+  void resetDiTrigger();
   void addLogic();
   void logicTypeChanged();
   void touchUp();
@@ -111,6 +112,7 @@ class ProgramPanel : public PanelBase {
   void showReport(const xmate::teach::RunReport& report);
   void showProblems(const std::vector<xmate::teach::Problem>& problems);
   void updateProgress();
+  void resetRunDisplay();  // after New / Open: no run of this program yet
   void updateOverlay();
   std::array<double, 7> currentQ() const;
 

@@ -68,7 +68,8 @@ void ProgramPanel::newProgram() {
   model_->setProgram(empty);
   path_.clear();
   modified_ = false;
-  have_via_ = false;
+  cancelPendingVia();
+  resetRunDisplay();
   updateTitle();
   updateButtons();
   updateOverlay();
@@ -95,8 +96,9 @@ bool ProgramPanel::openFile(const QString& path) {
   model_->setProgram(loaded);
   path_ = path;
   modified_ = false;
-  have_via_ = false;
+  cancelPendingVia();
   saveValue(QStringLiteral("lastDir"), QFileInfo(path).absolutePath());
+  resetRunDisplay();
   updateTitle();
   updateButtons();
   updateOverlay();

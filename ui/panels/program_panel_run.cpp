@@ -205,6 +205,12 @@ void ProgramPanel::showProblems(const std::vector<xmate::teach::Problem>& proble
   }
 }
 
+void ProgramPanel::resetRunDisplay() {
+  progress_->setValue(0);
+  progress_->setFormat(tr("Idle"));
+  run_state_->setText(tr("Idle"));
+}
+
 void ProgramPanel::updateProgress() {
   if (!running_) return;
   if (session().stopRequested()) run_slot_->executor.stop();  // the window's Stop
@@ -236,7 +242,7 @@ void ProgramPanel::refresh(const LiveState& live) {
 }
 
 void ProgramPanel::sessionOpened() {
-  di_known_ = false;
+  di_known_ = false;  // no inputs polled yet
   if (model_->count() == 0) newProgram();
   updateButtons();
   updateOverlay();

@@ -31,5 +31,8 @@ struct PanelSpec {
   Qt::DockWidgetArea area = Qt::RightDockWidgetArea;
 };
 std::vector<PanelSpec> createPanels(Session& session, QWidget* parent);
+// ui/panels: before the window closes, offers to save a modified program (the Program panel under
+// root). False if the user cancelled or the save failed: the window then stays open.
+bool maybeSaveProgram(QWidget* root);
 
 }  // namespace rci::ui
