@@ -77,6 +77,7 @@ class TestPlots : public QObject {
   void csvReplacesFileOnlyOnSuccess();
   void freezeStopsUpdates();
   void signalSelectionChangesVisibleSeries();
+  void chartsFitCompactDockAndLineUp();
   void frozenViewExportHasShownSeries();
   void jointTorquesAreJTransposeF();
   void widgetMapsExternalWrench();
@@ -358,6 +359,24 @@ void TestPlots::signalSelectionChangesVisibleSeries() {
   widget.setJointCount(6);  // a 6-axis arm: joint 7 leaves every chart
   QCOMPARE(widget.visibleSeriesCount(), 20);
   QVERIFY(!widget.canvas(Quantity::kPosition).isSeriesVisible(channelOf(Signal::kPositionMeasured, 6)));
+}
+
+// The control strip is one row and the charts are compact: all three fit a ~380 px dock, with plot
+// areas of equal width (a fixed value-label margin), so their left edges line up.
+void TestPlots::chartsFitCompactDockAndLineUp() {
+  PlotsWidget widget;
+  QVERIFY2(widget.minimumSizeHint().height() <= 330, qPrintable(QString::number(widget.minimumSizeHint().height())));
+  widget.resize(1200, 330);
+  widget.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&widget));
+  const int width = widget.canvas(Quantity::kPosition).plotWidth();
+  for (int q = 0; q < kQuantityCount; ++q) {
+    PlotCanvas& canvas = widget.canvas(static_cast<Quantity>(q));
+    QCOMPARE(canvas.plotWidth(), width);
+    QCOMPARE(canvas.widget()->x(), widget.canvas(Quantity::kPosition).widget()->x());
+    QVERIFY2(canvas.plotHeight() >= 50, qPrintable(QString::number(canvas.plotHeight())));
+  }
+  QVERIFY(width > 1000);
 }
 
 void TestPlots::frozenViewExportHasShownSeries() {

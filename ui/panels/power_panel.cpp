@@ -39,7 +39,7 @@ PowerPanel::PowerPanel(Session& session, QWidget* parent)
 
   auto* controller = new QGroupBox(tr("Controller"), this);
   auto* row = new QHBoxLayout(controller);
-  auto* reboot = new QPushButton(tr("Reboot controller..."), controller);
+  auto* reboot = new QPushButton(tr("Reboot controller…"), controller);
   reboot->setObjectName(QStringLiteral("power.reboot"));
   reboot->setToolTip(tr("Restart the robot controller: the session drops, tool, load and limits return to "
                         "their defaults"));

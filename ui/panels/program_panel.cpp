@@ -124,9 +124,9 @@ QWidget* ProgramPanel::buildFileRow() {
   bold.setBold(true);
   file_label_->setFont(bold);
   auto* new_button = makeButton(QStringLiteral("program.new"), tr("New"), tr("Start an empty program"), box);
-  auto* open = makeButton(QStringLiteral("program.open"), tr("Open..."), tr("Open a program file (JSON)"), box);
+  auto* open = makeButton(QStringLiteral("program.open"), tr("Open…"), tr("Open a program file (JSON)"), box);
   auto* save = makeButton(QStringLiteral("program.save"), tr("Save"), tr("Save the program to its file (asks for a name the first time)"), box);
-  auto* save_as = makeButton(QStringLiteral("program.saveAs"), tr("Save as..."), tr("Save the program under a new name"), box);
+  auto* save_as = makeButton(QStringLiteral("program.saveAs"), tr("Save as…"), tr("Save the program under a new name"), box);
   row->addWidget(file_label_, 1);
   for (auto* b : {new_button, open, save, save_as}) row->addWidget(b);
   connect(new_button, &QPushButton::clicked, this, &ProgramPanel::newClicked);
@@ -141,9 +141,9 @@ QWidget* ProgramPanel::buildTeachGroup() {
   auto* grid = new QGridLayout(group);
   record_type_ = new QComboBox(group);
   record_type_->setObjectName(QStringLiteral("program.recordType"));
-  record_type_->addItem(tr("J -- joint move (MOVEJ)"), kRecordJ);
-  record_type_->addItem(tr("L -- straight line (MOVEL)"), kRecordL);
-  record_type_->addItem(tr("C -- arc (MOVEC): via, then target"), kRecordC);
+  record_type_->addItem(tr("J — joint move (MOVEJ)"), kRecordJ);
+  record_type_->addItem(tr("L — straight line (MOVEL)"), kRecordL);
+  record_type_->addItem(tr("C — arc (MOVEC): via, then target"), kRecordC);
   record_type_->setToolTip(tr("How the robot will move to the recorded waypoint"));
   record_speed_ = new QSpinBox(group);
   record_speed_->setObjectName(QStringLiteral("program.recordSpeed"));
@@ -382,16 +382,16 @@ void ProgramPanel::selectRow(int row) {
 
 void ProgramPanel::record() {
   if (!haveLiveState()) {
-    showStatus(tr("Record: no robot state -- connect to a robot or the simulator first."), true);
+    showStatus(tr("Record: no robot state — connect to a robot or the simulator first."), true);
     return;
   }
   if (running_) {
-    showStatus(tr("Record: a run is active -- stop it first."), true);
+    showStatus(tr("Record: a run is active — stop it first."), true);
     return;
   }
   const xmate::XmateType type = session().robot() ? session().robot()->type() : session().target().type;
   if (model_->count() > 0 && program().robot != type) {
-    showStatus(tr("Record: this program is for another robot model than the one connected -- start a new "
+    showStatus(tr("Record: this program is for another robot model than the one connected — start a new "
                   "program (New) to teach this robot."),
                true);
     return;
@@ -406,7 +406,7 @@ void ProgramPanel::record() {
   if (kind == kRecordC && !have_via_) {
     via_ = target;
     have_via_ = true;
-    record_state_->setText(tr("MOVEC: via point recorded -- guide the arm to the arc's end and record the target."));
+    record_state_->setText(tr("MOVEC: via point recorded — guide the arm to the arc's end and record the target."));
     showStatus(tr("Via point recorded; waiting for the target."), false);
     return;
   }
@@ -460,7 +460,7 @@ void ProgramPanel::logicTypeChanged() {
 
 void ProgramPanel::addLogic() {
   if (running_) {
-    showStatus(tr("Insert: a run is active -- stop it first."), true);
+    showStatus(tr("Insert: a run is active — stop it first."), true);
     return;
   }
   Instruction in;
@@ -512,7 +512,7 @@ void ProgramPanel::updateTitle() {
   const QString name = path_.isEmpty() ? tr("untitled") : QFileInfo(path_).fileName();
   file_label_->setText(modified_ ? tr("%1 (modified)").arg(name) : name);
   file_label_->setToolTip(path_.isEmpty() ? tr("Not saved yet") : path_);
-  const QString title = tr("Program -- %1%2").arg(name, modified_ ? QStringLiteral(" *") : QString());
+  const QString title = tr("Program \u2014 %1%2").arg(name, modified_ ? QStringLiteral(" *") : QString());
   setWindowTitle(title);
   for (QWidget* w = parentWidget(); w; w = w->parentWidget())
     if (auto* dock = qobject_cast<QDockWidget*>(w)) {

@@ -54,7 +54,7 @@ bool ProgramPanel::maybeSaveProgram() {
 
 void ProgramPanel::newClicked() {
   if (running_) {
-    showStatus(tr("New: a run is active -- stop it first."), true);
+    showStatus(tr("New: a run is active — stop it first."), true);
     return;
   }
   if (!maybeSaveProgram()) return;
@@ -77,7 +77,7 @@ void ProgramPanel::newProgram() {
 
 void ProgramPanel::openClicked() {
   if (running_) {
-    showStatus(tr("Open: a run is active -- stop it first."), true);
+    showStatus(tr("Open: a run is active — stop it first."), true);
     return;
   }
   if (!maybeSaveProgram()) return;
@@ -90,7 +90,7 @@ bool ProgramPanel::openFile(const QString& path) {
   try {
     loaded = xmate::teach::loadProgram(path.toStdString());
   } catch (const std::exception& e) {
-    showStatus(tr("Open failed: %1 -- the program shown was not changed.").arg(QString::fromStdString(e.what())), true);
+    showStatus(tr("Open failed: %1 — the program shown was not changed.").arg(QString::fromStdString(e.what())), true);
     return false;
   }
   model_->setProgram(loaded);
@@ -130,7 +130,7 @@ bool ProgramPanel::saveFile(const QString& path) {
     for (size_t i = 0; i < p.instructions.size(); ++i) xmate::teach::validateInstruction(p.instructions[i], i, p.robot);
     xmate::teach::saveProgram(path.toStdString(), p);
   } catch (const std::exception& e) {
-    showStatus(tr("Save failed: %1 -- nothing was written; fix it and save again.").arg(QString::fromStdString(e.what())), true);
+    showStatus(tr("Save failed: %1 — nothing was written; fix it and save again.").arg(QString::fromStdString(e.what())), true);
     return false;
   }
   path_ = path;

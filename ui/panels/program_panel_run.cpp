@@ -79,7 +79,7 @@ void ProgramPanel::startRun(const xmate::teach::Program& program, bool single_st
     return;
   }
   if (!isOpen()) {
-    showStatus(tr("%1: not connected -- connect to a robot or the simulator first.").arg(action), true);
+    showStatus(tr("%1: not connected — connect to a robot or the simulator first.").arg(action), true);
     return;
   }
   xmate::teach::ExecutorOptions options = executorOptions();

@@ -1,5 +1,6 @@
 // ChartCanvas: PlotCanvas on Qt Charts -- one QLineSeries per series, refreshed with a single
-// replace() per frame, software (raster) rendering, value axes set by the caller.
+// replace() per frame, software (raster) rendering, value axes set by the caller, and a plot area
+// with a fixed left margin so that stacked charts line up.
 #pragma once
 
 #include <QHash>
@@ -30,6 +31,12 @@ class ChartCanvas : public PlotCanvas {
   bool isSeriesVisible(int id) const override;
   QList<QPointF> seriesPoints(int id) const override;
   int visibleSeriesCount() const override;
+
+  // Shows or hides the time-axis tick labels (stacked charts label only the bottom one).
+  void setXLabelsVisible(bool visible);
+  // Places the plot area inside the view: a fixed left margin wide enough for any value label,
+  // bottom room for the time labels and title when shown. Called on every resize of the view.
+  void layoutPlotArea();
 
  private:
   QChart* chart_ = nullptr;

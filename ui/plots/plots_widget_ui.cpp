@@ -1,9 +1,9 @@
-// PlotsWidget (plots_widget.h), controls: the charts' layout, joint and signal choosers, time window,
-// freeze/resume, the export menu and the status line.
+// PlotsWidget (plots_widget.h), controls: the charts' layout and the one-row control strip (joint and
+// signal toggles, time window, freeze/resume, the export menu, the status line).
 #include <QCheckBox>
 #include <QFileDialog>
-#include <QGridLayout>
-#include <QGroupBox>
+#include <QFontMetrics>
+#include <QFrame>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenu>
@@ -15,6 +15,8 @@
 #include <QSpinBox>
 #include <QSplitter>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 #include "plots/chart_canvas.h"
 #include "plots/plots_widget.h"
@@ -37,16 +39,6 @@ Qt::PenStyle penStyle(Signal signal) {
   return Qt::SolidLine;
 }
 
-QIcon swatch(const QColor& colour) {
-  QPixmap pixmap(12, 12);
-  pixmap.fill(Qt::transparent);
-  QPainter painter(&pixmap);
-  painter.setPen(colour.darker(130));
-  painter.setBrush(colour);
-  painter.drawRect(0, 0, 11, 11);
-  return QIcon(pixmap);
-}
-
 QIcon lineSample(Qt::PenStyle style) {
   QPixmap pixmap(24, 12);
   pixmap.fill(Qt::transparent);
@@ -59,63 +51,131 @@ QIcon lineSample(Qt::PenStyle style) {
   return QIcon(pixmap);
 }
 
+// Short axis titles with units: the charts are small, the joint/signal chooser names them in full.
+QString axisTitle(Quantity quantity) {
+  switch (quantity) {
+    case Quantity::kPosition: return QStringLiteral("q [rad]");
+    case Quantity::kVelocity: return QStringLiteral("dq [rad/s]");
+    default: return QStringLiteral("τ [Nm]");
+  }
+}
+
+// The short name of a signal in the control strip.
+QString signalShortName(Signal signal) {
+  switch (signal) {
+    case Signal::kPositionMeasured: return QStringLiteral("q");
+    case Signal::kPositionCommanded: return QStringLiteral("q cmd");
+    case Signal::kVelocityMeasured: return QStringLiteral("dq");
+    case Signal::kTorqueMeasured: return QStringLiteral("τ");
+    case Signal::kTorqueCommanded: return QStringLiteral("τ cmd");
+    default: return QStringLiteral("τ ext");
+  }
+}
+
+// A joint toggle: its check indicator is a small square filled with the joint's colour when on.
+QString jointCheckStyle(const QColor& colour) {
+  return QStringLiteral("QCheckBox { spacing: 3px; }"
+                        "QCheckBox::indicator { width: 11px; height: 11px; border: 1px solid %1;"
+                        " border-radius: 2px; background: palette(base); }"
+                        "QCheckBox::indicator:checked { background: %2; }"
+                        "QCheckBox::indicator:disabled { border-color: palette(mid); background: palette(window); }")
+      .arg(colour.darker(130).name(), colour.name());
+}
+
+QFrame* separator(QWidget* parent) {
+  auto* line = new QFrame(parent);
+  line->setFrameShape(QFrame::VLine);
+  line->setFrameShadow(QFrame::Sunken);
+  return line;
+}
+
+QLabel* caption(const QString& text, QWidget* parent) {
+  auto* label = new QLabel(text, parent);
+  QPalette palette = label->palette();  // a softer text colour than the controls it names
+  QColor colour = palette.color(QPalette::WindowText);
+  colour.setAlpha(170);
+  palette.setColor(QPalette::WindowText, colour);
+  label->setPalette(palette);
+  return label;
+}
+
+QHBoxLayout* stripLayout(QWidget* owner) {
+  auto* row = new QHBoxLayout(owner);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->setSpacing(6);
+  return row;
+}
+
 }  // namespace
 
 void PlotsWidget::buildUi() {
   auto* controls = new QHBoxLayout;
   controls->setSpacing(8);
   controls->addWidget(buildJointChooser());
+  controls->addWidget(separator(this));
   controls->addWidget(buildSignalChooser());
-  controls->addWidget(buildViewControls(), 1);
+  controls->addWidget(separator(this));
+  controls->addWidget(buildViewControls());
+  controls->addStretch(1);
+  status_ = new QLabel(this);
+  status_->setToolTip(tr("Session time of the newest sample shown (the right edge of the charts, 0 s on the "
+                          "time axis), and the recorded time held in memory (the most recent %1 s are kept)")
+                           .arg(kMaxWindowSeconds));
+  controls->addWidget(status_);
 
   auto* splitter = new QSplitter(Qt::Vertical, this);
   splitter->setChildrenCollapsible(false);
+  splitter->setHandleWidth(4);
   for (int q = 0; q < kQuantityCount; ++q) {
     auto canvas = std::make_unique<ChartCanvas>(splitter);
     const auto quantity = static_cast<Quantity>(q);
-    // One time-axis title, under the bottom chart: the three charts share the time axis.
+    // The three charts share the time axis: only the bottom one carries its labels and title.
     const bool bottom = q == kQuantityCount - 1;
-    canvas->setAxisTitles(bottom ? tr("Time (s), 0 = newest sample") : QString(),
-                          QStringLiteral("%1 (%2)").arg(quantityTitle(quantity), quantityUnit(quantity)));
+    canvas->setXLabelsVisible(bottom);
+    canvas->setAxisTitles(bottom ? tr("Time [s], 0 = newest sample") : QString(), axisTitle(quantity));
+    canvas->widget()->setToolTip(tr("%1 (%2) of the joints ticked under Joints; line style as under Signals")
+                                     .arg(quantityTitle(quantity), quantityUnit(quantity)));
     splitter->addWidget(canvas->widget());
     canvases_[static_cast<std::size_t>(q)] = std::move(canvas);
   }
+  // Space is shared in proportion to the minimum heights, so the bottom chart -- which also holds the
+  // time labels and title -- gets a plot area about as tall as the others.
+  QList<int> sizes;
+  for (const auto& canvas : canvases_) sizes << canvas->widget()->minimumHeight();
+  splitter->setSizes(sizes);
 
   auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(6, 6, 6, 6);
-  layout->setSpacing(6);
+  layout->setContentsMargins(6, 4, 6, 4);
+  layout->setSpacing(4);
   layout->addLayout(controls);
   layout->addWidget(splitter, 1);
 }
 
 QWidget* PlotsWidget::buildJointChooser() {
-  auto* box = new QGroupBox(tr("Joints"), this);
-  auto* grid = new QGridLayout(box);
-  grid->setHorizontalSpacing(10);
+  auto* strip = new QWidget(this);
+  QHBoxLayout* row = stripLayout(strip);
+  row->addWidget(caption(tr("Joints"), strip));
   for (int j = 0; j < kJointCount; ++j) {
-    auto* check = new QCheckBox(QStringLiteral("J%1").arg(j + 1), box);
-    check->setIcon(swatch(jointColour(j)));
+    auto* check = new QCheckBox(QStringLiteral("J%1").arg(j + 1), strip);
+    check->setStyleSheet(jointCheckStyle(jointColour(j)));
     check->setChecked(joint_on_[static_cast<std::size_t>(j)]);
-    check->setToolTip(tr("Show joint %1 in every chart").arg(j + 1));
+    check->setToolTip(tr("Show joint %1 in every chart (its lines are drawn in this colour)").arg(j + 1));
     connect(check, &QCheckBox::toggled, this, [this, j](bool on) { setJointVisible(j, on); });
-    grid->addWidget(check, j / 4, j % 4);
+    row->addWidget(check);
     joint_boxes_[static_cast<std::size_t>(j)] = check;
   }
-  return box;
+  return strip;
 }
 
 QWidget* PlotsWidget::buildSignalChooser() {
-  auto* box = new QGroupBox(tr("Signals"), this);
-  auto* grid = new QGridLayout(box);
-  grid->setHorizontalSpacing(10);
-  const std::array<QString, kQuantityCount> rows{tr("Position:"), tr("Velocity:"), tr("Torque:")};
-  std::array<int, kQuantityCount> next_column{1, 1, 1};
-  for (int q = 0; q < kQuantityCount; ++q) grid->addWidget(new QLabel(rows[static_cast<std::size_t>(q)], box), q, 0);
+  auto* strip = new QWidget(this);
+  QHBoxLayout* row = stripLayout(strip);
+  row->addWidget(caption(tr("Signals"), strip));
   for (int s = 0; s < kSignalCount; ++s) {
     const auto signal = static_cast<Signal>(s);
-    const int row = static_cast<int>(quantityOf(signal));
-    auto* check = new QCheckBox(signalLabel(signal), box);
+    auto* check = new QCheckBox(signalShortName(signal), strip);
     check->setIcon(lineSample(penStyle(signal)));
+    check->setIconSize(QSize(24, 12));
     check->setChecked(signal_on_[static_cast<std::size_t>(s)]);
     check->setToolTip(tr("%1 %2 (%3), drawn %4")
                           .arg(quantityTitle(quantityOf(signal)), signalLabel(signal),
@@ -124,33 +184,37 @@ QWidget* PlotsWidget::buildSignalChooser() {
                                : penStyle(signal) == Qt::DashLine ? tr("dashed")
                                                                   : tr("dotted")));
     connect(check, &QCheckBox::toggled, this, [this, signal](bool on) { setSignalVisible(signal, on); });
-    grid->addWidget(check, row, next_column[static_cast<std::size_t>(row)]++);
+    row->addWidget(check);
     signal_boxes_[static_cast<std::size_t>(s)] = check;
   }
   signal_boxes_[static_cast<int>(Signal::kTorqueExternal)]->setToolTip(
       tr("External joint torques (Nm): the external wrench at the TCP mapped with J(q)^T, drawn dotted"));
-  return box;
+  return strip;
 }
 
 QWidget* PlotsWidget::buildViewControls() {
-  auto* box = new QGroupBox(tr("View"), this);
-  auto* grid = new QGridLayout(box);
-  grid->addWidget(new QLabel(tr("Time window:"), box), 0, 0);
-  window_box_ = new QSpinBox(box);
+  auto* strip = new QWidget(this);
+  QHBoxLayout* row = stripLayout(strip);
+  row->addWidget(caption(tr("Window"), strip));
+  window_box_ = new QSpinBox(strip);
   window_box_->setRange(kMinWindowSeconds, kMaxWindowSeconds);
   window_box_->setValue(window_seconds_);
   window_box_->setSuffix(tr(" s"));
   window_box_->setToolTip(tr("Span of the time axis, %1 to %2 seconds").arg(kMinWindowSeconds).arg(kMaxWindowSeconds));
   connect(window_box_, &QSpinBox::valueChanged, this, &PlotsWidget::setWindowSeconds);
-  grid->addWidget(window_box_, 0, 1);
+  row->addWidget(window_box_);
 
-  freeze_button_ = new QPushButton(tr("Freeze"), box);
+  freeze_button_ = new QPushButton(tr("Freeze"), strip);
   freeze_button_->setCheckable(true);
   freeze_button_->setToolTip(tr("Stop scrolling to inspect the plots; recording continues in the background"));
+  // Wide enough for "Resume" too, so the strip does not shift when the text changes.
+  const QFontMetrics metrics(freeze_button_->font());
+  freeze_button_->setMinimumWidth(
+      std::max(metrics.horizontalAdvance(tr("Freeze")), metrics.horizontalAdvance(tr("Resume"))) + 24);
   connect(freeze_button_, &QPushButton::toggled, this, &PlotsWidget::setFrozen);
-  grid->addWidget(freeze_button_, 1, 0);
+  row->addWidget(freeze_button_);
 
-  export_button_ = new QPushButton(tr("Export CSV…"), box);
+  export_button_ = new QPushButton(tr("Export CSV…"), strip);
   export_button_->setToolTip(tr("Save recorded samples as CSV (time in s, one column per joint and signal, units in the header)"));
   auto* menu = new QMenu(export_button_);
   menu->addAction(tr("Whole buffer (all signals)…"), this, [this] { askExport(ExportScope::kWholeBuffer); });
@@ -158,15 +222,8 @@ QWidget* PlotsWidget::buildViewControls() {
       menu->addAction(tr("Frozen view (shown series)…"), this, [this] { askExport(ExportScope::kFrozenView); });
   connect(menu, &QMenu::aboutToShow, this, [this, view_action] { view_action->setEnabled(isFrozen()); });
   export_button_->setMenu(menu);
-  grid->addWidget(export_button_, 1, 1);
-
-  status_ = new QLabel(box);
-  status_->setToolTip(tr("Session time of the newest sample shown (the right edge of the charts, 0 s on the "
-                          "time axis), and the recorded time held in memory (the most recent %1 s are kept)")
-                           .arg(kMaxWindowSeconds));
-  grid->addWidget(status_, 2, 0, 1, 2);
-  grid->setColumnStretch(2, 1);
-  return box;
+  row->addWidget(export_button_);
+  return strip;
 }
 
 void PlotsWidget::declareSeries() {

@@ -7,12 +7,14 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <map>
 
 #include "window/banner.h"
@@ -35,6 +37,11 @@ namespace rci::ui {
 namespace {
 
 constexpr int kLayoutVersion = 1;
+// Default dock sizes: the panels need room for their forms; the plots take this share of the height.
+constexpr int kLeftDockWidth = 560;
+constexpr int kRightDockWidth = 380;
+constexpr double kSideDockMaxShare = 0.4;  // a side dock widens for its panel up to this share of the width
+constexpr double kPlotsHeightShare = 0.4;
 
 QSettings windowSettings() { return QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")); }
 
@@ -135,9 +142,59 @@ void MainWindow::buildDocks() {
     if (!inserted) tabifyDockWidget(it->second, dock);
   }
   for (const auto& [area, dock] : first) dock->raise();
-  if (first.count(Qt::LeftDockWidgetArea)) resizeDocks({first[Qt::LeftDockWidgetArea]}, {450}, Qt::Horizontal);
-  if (first.count(Qt::RightDockWidgetArea)) resizeDocks({first[Qt::RightDockWidgetArea]}, {420}, Qt::Horizontal);
-  resizeDocks({plots}, {380}, Qt::Vertical);
+}
+
+// The preferred width, or more when the dock's panel needs more to show without a horizontal scroll bar.
+int MainWindow::sideDockWidth(QDockWidget* dock, int preferred) const {
+  int needed = 0;
+  if (auto* area = qobject_cast<QScrollArea*>(dock->widget()); area != nullptr && area->widget() != nullptr) {
+    // The narrowest the scroll area lays the panel out: its size hint unless its policy lets it shrink.
+    const QWidget* panel = area->widget();
+    const bool shrinks = (panel->sizePolicy().horizontalPolicy() & QSizePolicy::ShrinkFlag) != 0;
+    const int panel_width = std::max(panel->minimumWidth(), shrinks ? panel->minimumSizeHint().width() : panel->sizeHint().width());
+    needed = panel_width + area->verticalScrollBar()->sizeHint().width() + 8;
+  }
+  const int limit = std::max(preferred, static_cast<int>(width() * kSideDockMaxShare));
+  // The size given to resizeDocks also covers the area's vertical tab bar.
+  return std::clamp(needed, preferred, limit) + sideTabBarWidth(dockWidgetArea(dock));
+}
+
+int MainWindow::sideTabBarWidth(Qt::DockWidgetArea area) const {
+  const bool left = area == Qt::LeftDockWidgetArea;
+  int width = 0;
+  for (const QTabBar* tabs : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+    const QTabBar::Shape shape = tabs->shape();
+    const bool west = shape == QTabBar::RoundedWest || shape == QTabBar::TriangularWest;
+    const bool east = shape == QTabBar::RoundedEast || shape == QTabBar::TriangularEast;
+    if (tabs->isVisible() && (left ? west : east)) width = std::max(width, tabs->width());
+  }
+  return width;
+}
+
+void MainWindow::applyDefaultDockSizes() {
+  // One dock per area is enough: tabbed docks share their area's size.
+  QList<QDockWidget*> widths, heights;
+  QList<int> width_sizes, height_sizes;
+  bool left = false, right = false, bottom = false;
+  for (QDockWidget* dock : docks_) {
+    if (dock->isFloating() || dock->isHidden()) continue;
+    const Qt::DockWidgetArea area = dockWidgetArea(dock);
+    if (area == Qt::LeftDockWidgetArea && !left) {
+      left = true;
+      widths << dock;
+      width_sizes << sideDockWidth(dock, kLeftDockWidth);
+    } else if (area == Qt::RightDockWidgetArea && !right) {
+      right = true;
+      widths << dock;
+      width_sizes << sideDockWidth(dock, kRightDockWidth);
+    } else if (area == Qt::BottomDockWidgetArea && !bottom) {
+      bottom = true;
+      heights << dock;
+      height_sizes << static_cast<int>(height() * kPlotsHeightShare);
+    }
+  }
+  if (!widths.isEmpty()) resizeDocks(widths, width_sizes, Qt::Horizontal);
+  if (!heights.isEmpty()) resizeDocks(heights, height_sizes, Qt::Vertical);
 }
 
 void MainWindow::buildMenus() {
@@ -233,7 +290,7 @@ void MainWindow::restoreLayout() {
   const QByteArray geometry = s.value(QStringLiteral("window/geometry")).toByteArray();
   if (!geometry.isEmpty()) restoreGeometry(geometry);
   const QByteArray state = s.value(QStringLiteral("window/state")).toByteArray();
-  if (!state.isEmpty()) restoreState(state, kLayoutVersion);
+  if (!state.isEmpty()) layout_restored_ = restoreState(state, kLayoutVersion);
 }
 
 void MainWindow::saveLayout() {
@@ -245,6 +302,7 @@ void MainWindow::saveLayout() {
 void MainWindow::resetLayout() {
   restoreState(default_state_, kLayoutVersion);
   for (QDockWidget* dock : docks_) dock->setFloating(false);
+  applyDefaultDockSizes();
   showFullTabNames();
 }
 
@@ -259,9 +317,17 @@ void MainWindow::showFullTabNames() {
 void MainWindow::showEvent(QShowEvent* event) {
   QMainWindow::showEvent(event);
   showFullTabNames();
+  if (shown_once_) return;
+  shown_once_ = true;
+  // Dock sizes need the window's real geometry: set them once it is laid out, unless restored.
+  if (!layout_restored_) QTimer::singleShot(0, this, [this] { applyDefaultDockSizes(); });
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSaveProgram(this)) {  // unsaved program: the user cancelled, or saving failed
+    event->ignore();
+    return;
+  }
   saveLayout();
   session_.close();
   event->accept();

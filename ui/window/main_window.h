@@ -51,6 +51,10 @@ class MainWindow : public QMainWindow {
   void restoreLayout();
   void saveLayout();
   void resetLayout();
+  // Gives the docks their default sizes (left panels, right panels, plots) for the current window size.
+  void applyDefaultDockSizes();
+  int sideDockWidth(QDockWidget* dock, int preferred) const;
+  int sideTabBarWidth(Qt::DockWidgetArea area) const;
   void updateTitle();
   void showFullTabNames();
 
@@ -62,6 +66,8 @@ class MainWindow : public QMainWindow {
   StatusStrip* strip_ = nullptr;
   std::vector<QDockWidget*> docks_;
   QByteArray default_state_;
+  bool layout_restored_ = false;  // a saved layout was restored: keep its dock sizes
+  bool shown_once_ = false;
 };
 
 }  // namespace rci::ui
