@@ -8,12 +8,23 @@
 
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "session/session_link.h"
 
 namespace rci::ui {
 namespace {
+
+// Runs a queued job on a worker thread: (true, "") or (false, what the exception said).
+std::pair<bool, QString> runCatching(const std::function<void(xmate::Robot&)>& job, xmate::Robot& robot) {
+  try {
+    job(robot);
+    return {true, QString()};
+  } catch (const std::exception& e) {
+    return {false, QString::fromStdString(e.what())};
+  }
+}
 
 constexpr int kTickMs = 33;            // ~30 Hz display rate
 constexpr qint64 kSilenceLimitMs = 1000;  // no state for this long: the controller is gone
@@ -323,14 +334,7 @@ void Session::run(const QString& label, std::function<void(xmate::Robot&)> job) 
   const uint64_t my_generation = impl_->generation;
   // Hand-off: the command worker's job queue (JobWorker::post, mutex + condition variable).
   impl_->link->commands->post([this, robot, my_generation, label, job = std::move(job)] {
-    bool ok = true;
-    QString message;
-    try {
-      job(*robot);
-    } catch (const std::exception& e) {
-      ok = false;
-      message = QString::fromStdString(e.what());
-    }
+    const auto [ok, message] = runCatching(job, *robot);
     // Hand-off: Qt queued invocation of the result to the GUI thread.
     QMetaObject::invokeMethod(
         this,
@@ -358,14 +362,7 @@ void Session::runMotion(const QString& label, std::function<void(xmate::Robot&)>
   // Hand-off: the motion worker's job queue (JobWorker::post); motion_busy / stop_requested are
   // atomics shared with the job and the real-time thread's callback.
   impl_->link->motions->post([this, robot, my_generation, label, job = std::move(job)] {
-    bool ok = true;
-    QString message;
-    try {
-      job(*robot);
-    } catch (const std::exception& e) {
-      ok = false;
-      message = QString::fromStdString(e.what());
-    }
+    const auto [ok, message] = runCatching(job, *robot);
     impl_->stop_requested.store(false);
     impl_->motion_busy.store(false);
     // Hand-off: Qt queued invocation of the result to the GUI thread.

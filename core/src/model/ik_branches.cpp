@@ -69,6 +69,11 @@ ZyzAngles zyzForIk(const Eigen::Matrix3d& r, double a_preferred, bool& singular)
   return z;
 }
 
+Eigen::Vector3d shoulderToWrist(const ArmGeometry& g, const Eigen::Isometry3d& flange) {
+  const Eigen::Vector3d wrist = flange.translation() - g.wrist_to_flange * flange.linear().col(2);
+  return wrist - Eigen::Vector3d(0, 0, g.base_to_shoulder);
+}
+
 void setZyzBranch(JointVector& q, int first, const ZyzAngles& z, int branch) {
   q[first] = z.a + branch * kPi;
   q[first + 1] = branch == 0 ? z.b : -z.b;

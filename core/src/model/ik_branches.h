@@ -21,6 +21,10 @@ struct IkCandidates {
   int count = 0;
 };
 
+// The vector from the shoulder (joint 2's axis on joint 1's axis) to the wrist centre (where the
+// wrist axes meet) for a flange pose, in the base frame: the start of both closed-form IKs.
+Eigen::Vector3d shoulderToWrist(const ArmGeometry& g, const Eigen::Isometry3d& flange);
+
 // Sets joints first .. first + 2 of q to a Z-Y-Z solution of z: branch 0 is (a, b, c), branch 1
 // is (a + pi, -b, c + pi).
 void setZyzBranch(JointVector& q, int first, const ZyzAngles& z, int branch);

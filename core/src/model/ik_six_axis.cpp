@@ -20,8 +20,7 @@ IkStatus sixAxisCandidates(const ArmModel& arm, const Eigen::Isometry3d& flange,
                            IkCandidates& out) {
   const ArmGeometry& g = arm.geometry;
   const Eigen::Matrix3d& r = flange.linear();
-  const Eigen::Vector3d wrist = flange.translation() - g.wrist_to_flange * r.col(2);
-  const Eigen::Vector3d sw = wrist - Eigen::Vector3d(0, 0, g.base_to_shoulder);
+  const Eigen::Vector3d sw = shoulderToWrist(g, flange);
   const double reach = sw.norm();
   const double a2 = g.upper_arm, d4 = g.forearm;
 
