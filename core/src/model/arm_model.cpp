@@ -1,6 +1,7 @@
 // Building an ArmModel from a Chain, and the setters that keep its derived fields consistent.
 #include "model/arm_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -142,15 +143,22 @@ void setTool(ArmModel& arm, const Eigen::Isometry3d& flange_to_tcp) {
   arm.tool_inverse = flange_to_tcp.inverse(Eigen::Isometry);
 }
 
-void setPayload(ArmModel& arm, const Payload& payload) {
+bool isSymmetricInertia(const Eigen::Matrix3d& inertia) {
+  if (!inertia.allFinite()) return false;
+  const double scale = std::max(1e-9, inertia.cwiseAbs().maxCoeff());
+  return (inertia - inertia.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * scale;
+}
+
+void setPayload(ArmModel& arm, const Payload& given) {
+  Payload payload = given;
   if (!std::isfinite(payload.mass) || payload.mass < 0)
     throw std::invalid_argument("SetLoad: mass must be finite and >= 0 kg");
   if (!payload.com.allFinite())
     throw std::invalid_argument("SetLoad: centre of mass must be finite (m, flange frame)");
-  if (!payload.inertia.allFinite() ||
-      (payload.inertia - payload.inertia.transpose()).cwiseAbs().maxCoeff() > 1e-9)
+  if (!isSymmetricInertia(payload.inertia))
     throw std::invalid_argument(
         "SetLoad: inertia must be a finite symmetric 3x3 matrix (kg m^2, about the centre of mass, flange axes)");
+  payload.inertia = 0.5 * (payload.inertia + payload.inertia.transpose()).eval();
   arm.payload = payload;
   arm.links = arm.chain_links;
   const LinkInertia load = inertiaAboutOrigin(payload.mass, payload.com, payload.inertia, arm.flange);

@@ -84,8 +84,13 @@ ArmModel makeArmModel(const Chain& chain, const RobotSpec& spec);
 // Tool centre point relative to the flange. Throws std::invalid_argument unless it is a rigid transform.
 void setTool(ArmModel& arm, const Eigen::Isometry3d& flange_to_tcp);
 
+// True when `inertia` is finite and symmetric to 1e-9 relative to its largest entry: the one
+// symmetry test of a payload inertia for setPayload, the client and the simulator (parameter_checks).
+bool isSymmetricInertia(const Eigen::Matrix3d& inertia);
+
 // Payload attached to the flange. Throws std::invalid_argument for a negative or non-finite mass, a
-// non-finite centre of mass or an inertia that is not finite and symmetric.
+// non-finite centre of mass or an inertia that fails isSymmetricInertia; stores the inertia with its
+// two triangles averaged, so the dynamics see an exactly symmetric matrix.
 void setPayload(ArmModel& arm, const Payload& payload);
 
 // Soft joint limits for the IK (rad). Throws std::invalid_argument unless

@@ -1,6 +1,8 @@
 // The range checks of parameter_checks.h, with messages that say what to change.
 #include "model/parameter_checks.h"
 
+#include "model/arm_model.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -121,9 +123,13 @@ std::string checkLoad(const RobotSpec& spec, double mass, const std::array<doubl
   Eigen::Matrix3d I;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) I(i, j) = inertia[3 * i + j];
-  const double scale = std::max(1e-9, I.cwiseAbs().maxCoeff());
-  if ((I - I.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
+  if (!isSymmetricInertia(I))
     return "setLoad: inertia must be symmetric (row-major 3x3 about the centre of mass, kg m^2)";
+  for (int i = 0; i < 3; ++i)
+    if (I(i, i) > kLoadInertiaMaxKgM2)
+      return outside("setLoad", "inertia", 4 * i, I(i, i), "[0, " + fmt(kLoadInertiaMaxKgM2) + "]",
+                     "kg m^2 (a diagonal moment of inertia)");
+  const double scale = std::max(1e-9, I.cwiseAbs().maxCoeff());
   const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
   if (ev.minCoeff() < -1e-12)
     return "setLoad: inertia must be positive semi-definite (smallest eigenvalue " + fmt(ev.minCoeff()) + ")";

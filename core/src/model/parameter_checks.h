@@ -18,6 +18,7 @@ double ratedPayloadKg(const RobotSpec& spec);
 inline constexpr double kFilterMinHz = 1.0, kFilterMaxHz = 1000.0;
 inline constexpr double kFilterRecommendedMinHz = 10.0, kFilterRecommendedMaxHz = 100.0;
 inline constexpr double kLoadCenterMaxM = 0.5;
+inline constexpr double kLoadInertiaMaxKgM2 = 2.0;  // per diagonal moment: 7 kg as a 1.8 m rod
 inline constexpr double kToolOffsetMaxM = 0.5;
 inline constexpr double kSafetyBoxMaxSizeM = 5.0;
 inline constexpr double kDesiredForceMaxN = 60.0, kDesiredTorqueMaxNm = 10.0;
