@@ -1,11 +1,15 @@
 // rci-bench-plot: ms per redraw frame of the live plots (7 joints x 3 signals, 1 kHz, 10 s window) against
-// the naive replace-all-raw-points path, and CPU share while streaming. Results: docs/performance.md ("Live plots").
+// Qt Charts' own QLineSeries (fed raw or decimated points), and CPU share while streaming. Results: docs/performance.md ("Live plots").
 #include <QApplication>
+#include <QChart>
+#include <QChartView>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QLineSeries>
 #include <QPainter>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
 #include <time.h>
 
@@ -20,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "plots/chart_canvas.h"
+#include "plots/decimation.h"
 #include "plots/plots_widget.h"
 
 using namespace rci::ui::plots;
@@ -136,7 +140,7 @@ void paintCharts(const std::array<QWidget*, kQuantityCount>& charts, QImage& ima
   }
 }
 
-// Our path: the production PlotsWidget (decimate + replace) then painting its three charts.
+// Our path: the production PlotsWidget (decimate + trace layer) then painting its three charts.
 FrameStats benchOurs(const Options& options, long& next) {
   PlotsWidget widget;
   widget.resize(kWidth, kHeight);
@@ -169,19 +173,51 @@ FrameStats benchOurs(const Options& options, long& next) {
   return stats;
 }
 
-// The reference: the same charts (ChartCanvas, same pens and axes), each series replaced with every
-// raw point of the window -- no decimation.
-FrameStats benchNaive(const Options& options, long& next) {
+// One chart of the references: textbook Qt Charts -- a QChart with fixed value axes and one
+// QLineSeries per joint, antialiasing and OpenGL off, refreshed with one replace() per series.
+struct SeriesChart {
+  QChart* chart = new QChart;
+  QChartView* view = nullptr;
+  std::array<QLineSeries*, 7> series{};
+
+  SeriesChart(QWidget* parent, double y_range) {
+    chart->legend()->hide();
+    chart->setAnimationOptions(QChart::NoAnimation);
+    auto* x_axis = new QValueAxis;
+    auto* y_axis = new QValueAxis;
+    x_axis->setRange(-kWindowSeconds, 0);
+    y_axis->setRange(-y_range, y_range);
+    chart->addAxis(x_axis, Qt::AlignBottom);
+    chart->addAxis(y_axis, Qt::AlignLeft);
+    for (int j = 0; j < 7; ++j) {
+      series[j] = new QLineSeries;
+      series[j]->setUseOpenGL(false);
+      QPen pen(jointColour(j));
+      pen.setWidthF(1.2);
+      pen.setCosmetic(true);
+      series[j]->setPen(pen);
+      chart->addSeries(series[j]);
+      series[j]->attachAxis(x_axis);
+      series[j]->attachAxis(y_axis);
+    }
+    view = new QChartView(chart, parent);
+    view->setRenderHint(QPainter::Antialiasing, false);
+  }
+};
+
+// The references: the same data and layout drawn with Qt Charts' own QLineSeries, handed either every
+// raw point of the window (naive) or the points our decimation and half-pixel simplification keep
+// (the production path before the trace layer).
+FrameStats benchQtChartsSeries(const Options& options, long& next, bool decimate) {
   QWidget host;
   auto* layout = new QVBoxLayout(&host);
-  std::array<std::unique_ptr<ChartCanvas>, kQuantityCount> canvases;
+  std::vector<std::unique_ptr<SeriesChart>> charts_owned;
   std::array<QWidget*, kQuantityCount> charts{};
+  const std::array<double, kQuantityCount> y_range{3, 3, 60};
   for (int q = 0; q < kQuantityCount; ++q) {
-    canvases[q] = std::make_unique<ChartCanvas>(&host);
-    charts[q] = canvases[q]->widget();
+    charts_owned.push_back(std::make_unique<SeriesChart>(&host, y_range[q]));
+    charts[q] = charts_owned.back()->view;
     layout->addWidget(charts[q]);
-    for (int j = 0; j < 7; ++j) canvases[q]->addSeries(channelOf(kBenchSignals[q], j), QString(), jointColour(j), Qt::SolidLine);
-    canvases[q]->setYRange(q == 2 ? -60 : -3, q == 2 ? 60 : 3);
   }
   host.resize(kWidth, kHeight - 120);  // about the charts' share of PlotsWidget
   host.show();
@@ -196,6 +232,7 @@ FrameStats benchNaive(const Options& options, long& next) {
   QImage image(charts[0]->size(), QImage::Format_ARGB32_Premultiplied);
   FrameStats stats;
   QList<QPointF> points;
+  MinMaxDecimator decimator;
   for (int frame = 0; frame < options.frames; ++frame) {
     for (int i = 0; i < 33; ++i, ++next) {
       channelsOf(syntheticSample(next), no_ext, values);
@@ -205,15 +242,23 @@ FrameStats benchNaive(const Options& options, long& next) {
       const double x1 = buffer.newestTime(), x0 = x1 - kWindowSeconds;
       const IndexRange range = buffer.window(x0, x1);
       for (int q = 0; q < kQuantityCount; ++q) {
-        // The same fixed time axis as the widget ([-window, 0]), so both paths rebuild each series'
-        // geometry once per frame and differ only in the points handed over.
-        canvases[q]->setXRange(-kWindowSeconds, 0);
+        const QRectF area = charts_owned[q]->chart->plotArea();
         for (int j = 0; j < 7; ++j) {
           const int channel = channelOf(kBenchSignals[q], j);
-          points.clear();
-          for (int i = range.first; i < range.last; ++i)
-            points.append(QPointF(buffer.time(i) - x1, buffer.value(channel, i)));
-          canvases[q]->setSeries(channel, points);
+          if (decimate) {
+            std::array<SampleSpan, 2> spans;
+            const int n = buffer.spans(channel, range, spans);
+            decimator.begin(x0, x1, static_cast<int>(area.width()), points);
+            for (int k = 0; k < n; ++k) decimator.add(spans[k].time, spans[k].value, spans[k].count);
+            decimator.finish();
+            simplifyWithin(points, 0.5 * 2 * y_range[q] / area.height());
+            for (QPointF& p : points) p.rx() -= x1;
+          } else {
+            points.clear();
+            for (int i = range.first; i < range.last; ++i)
+              points.append(QPointF(buffer.time(i) - x1, buffer.value(channel, i)));
+          }
+          charts_owned[q]->series[j]->replace(points);
           stats.points += points.size();
         }
       }
@@ -330,7 +375,8 @@ int main(int argc, char** argv) {
                 ours.update_cpu_ms, ours.paint_ms, ours.paint_cpu_ms, ours.points);
     return 0;
   }
-  const FrameStats naive = benchNaive(options, next);
+  const FrameStats series = benchQtChartsSeries(options, next, true);
+  const FrameStats naive = benchQtChartsSeries(options, next, false);
   const double decimation_cpu_ms = benchDecimationOnly(options);
   std::printf("\nper redraw frame, mean of %d frames (ms; wall clock, and CPU time of the GUI thread)\n", options.frames);
   std::printf("                              update wall/cpu   paint wall/cpu   total wall/cpu   points/frame\n");
@@ -338,16 +384,21 @@ int main(int argc, char** argv) {
     std::printf("  %-26s %8.2f %7.2f %8.2f %7.2f %8.2f %7.2f %14.0f\n", name, s.update_ms, s.update_cpu_ms, s.paint_ms,
                 s.paint_cpu_ms, s.total(), s.totalCpu(), s.points);
   };
-  row("ours: decimate + replace", ours);
-  row("naive: replace raw points", naive);
+  row("ours: decimate + traces", ours);
+  row("QLineSeries, decimated", series);
+  row("QLineSeries, raw points", naive);
   std::printf("  ours, points per chart: position %.0f, velocity %.0f, torque %.0f\n", ours.points_per_chart[0],
               ours.points_per_chart[1], ours.points_per_chart[2]);
   std::printf("  of ours, the decimation alone: %.2f ms CPU\n", decimation_cpu_ms);
-  std::printf("  naive / ours: update %.1fx wall, %.1fx CPU; update + paint %.1fx wall, %.1fx CPU\n",
-              naive.update_ms / ours.update_ms, naive.update_cpu_ms / ours.update_cpu_ms, naive.total() / ours.total(),
-              naive.totalCpu() / ours.totalCpu());
+  auto ratio = [&](const char* name, const FrameStats& s) {
+    std::printf("  %s / ours: update %.1fx wall, %.1fx CPU; update + paint %.1fx wall, %.1fx CPU\n", name,
+                s.update_ms / ours.update_ms, s.update_cpu_ms / ours.update_cpu_ms, s.total() / ours.total(),
+                s.totalCpu() / ours.totalCpu());
+  };
+  ratio("QLineSeries decimated", series);
+  ratio("QLineSeries raw", naive);
   auto verdict = [](double ms) { return ms <= 8.0 ? "met" : "NOT met"; };
-  std::printf("  target <= 8 ms per frame -- decimate + replace: wall %s, CPU %s; with paint: wall %s, CPU %s\n",
+  std::printf("  target <= 8 ms per frame -- decimate + traces: wall %s, CPU %s; with paint: wall %s, CPU %s\n",
               verdict(ours.update_ms), verdict(ours.update_cpu_ms), verdict(ours.total()), verdict(ours.totalCpu()));
 
   const StreamStats stream = benchStreaming(options);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "plots/auto_scale.h"
+#include "plots/chart_canvas.h"
 #include "plots/csv_export.h"
 #include "plots/decimation.h"
 #include "plots/external_torque.h"
@@ -78,6 +79,7 @@ class TestPlots : public QObject {
   void freezeStopsUpdates();
   void signalSelectionChangesVisibleSeries();
   void chartsFitCompactDockAndLineUp();
+  void tracesAreDrawnWhereTheAxesSay();
   void frozenViewExportHasShownSeries();
   void jointTorquesAreJTransposeF();
   void widgetMapsExternalWrench();
@@ -377,6 +379,57 @@ void TestPlots::chartsFitCompactDockAndLineUp() {
     QVERIFY2(canvas.plotHeight() >= 50, qPrintable(QString::number(canvas.plotHeight())));
   }
   QVERIFY(width > 1000);
+}
+
+// The traces are drawn by our own layer inside the chart: a line at y = 5 spans the plot area's middle,
+// a line from y = 2 to y = 8 rises, a non-finite sample leaves a gap, and a hidden trace draws nothing.
+void TestPlots::tracesAreDrawnWhereTheAxesSay() {
+  ChartCanvas canvas;
+  QWidget* view = canvas.widget();
+  view->resize(500, 260);
+  view->show();
+  QVERIFY(QTest::qWaitForWindowExposed(view));
+  canvas.addSeries(0, QStringLiteral("middle"), QColor(220, 0, 0), Qt::SolidLine);
+  canvas.addSeries(1, QStringLiteral("rising"), QColor(0, 0, 220), Qt::SolidLine);
+  canvas.addSeries(2, QStringLiteral("hidden"), QColor(0, 200, 0), Qt::SolidLine);
+  canvas.setXRange(0, 10);
+  canvas.setYRange(0, 10);
+  canvas.setSeries(0, {{0, 5}, {10, 5}});
+  const double nan = std::nan("");
+  canvas.setSeries(1, {{0, 2}, {2, 2}, {5, nan}, {8, 8}, {10, 8}});
+  canvas.setSeriesVisible(2, false);
+  canvas.setSeries(2, {{0, 1}, {10, 9}});
+  QVERIFY(canvas.seriesPoints(2).isEmpty());
+  QCOMPARE(canvas.visibleSeriesCount(), 2);
+  QCOMPARE(canvas.seriesPoints(1).size(), 5);
+
+  const QImage image = view->grab().toImage().convertToFormat(QImage::Format_RGB32);
+  auto red = [&](int x, int y) { const QColor c = image.pixelColor(x, y); return c.red() - c.green() > 60; };
+  auto blue = [&](int x, int y) { const QColor c = image.pixelColor(x, y); return c.blue() - c.red() > 60; };
+  auto green = [&](int x, int y) { const QColor c = image.pixelColor(x, y); return c.green() - c.red() > 60; };
+  auto rowOf = [&](int x, const auto& is) {
+    for (int y = 0; y < image.height(); ++y)
+      if (is(x, y)) return y;
+    return -1;
+  };
+  // The red line marks the plot area's extent in x, and its middle in y.
+  int left = -1, right = -1;
+  for (int x = 0; x < image.width(); ++x)
+    if (rowOf(x, red) >= 0) {
+      if (left < 0) left = x;
+      right = x;
+    }
+  QVERIFY2(left >= 0 && right - left > 300, qPrintable(QStringLiteral("red from %1 to %2").arg(left).arg(right)));
+  QVERIFY(std::abs((right - left) - canvas.plotWidth()) <= 2);
+  auto column = [&](double x) { return left + static_cast<int>(std::lround(x / 10 * (right - left))); };
+  const int middle = rowOf(column(5), red);
+  const double pixels_per_unit = canvas.plotHeight() / 10.0;
+  const int low = rowOf(column(1), blue), high = rowOf(column(9), blue);
+  QVERIFY(low >= 0 && high >= 0);
+  QVERIFY2(std::abs(low - middle - 3 * pixels_per_unit) <= 2, qPrintable(QStringLiteral("%1 %2").arg(low).arg(middle)));
+  QVERIFY2(std::abs(middle - high - 3 * pixels_per_unit) <= 2, qPrintable(QStringLiteral("%1 %2").arg(high).arg(middle)));
+  QCOMPARE(rowOf(column(5), blue), -1);  // the gap of the non-finite sample
+  for (int x = left; x <= right; x += 10) QCOMPARE(rowOf(x, green), -1);
 }
 
 void TestPlots::frozenViewExportHasShownSeries() {

@@ -1,11 +1,12 @@
 // ChartCanvas (chart_canvas.h): the Qt Charts backend of PlotCanvas.
 #include "plots/chart_canvas.h"
 
+#include "plots/trace_layer.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QFontMetrics>
 #include <QGraphicsLayout>
-#include <QLineSeries>
 #include <QPen>
 #include <QValueAxis>
 
@@ -98,6 +99,8 @@ ChartCanvas::ChartCanvas(QWidget* parent) {
   view_ = new FixedAreaView(chart_, parent, [this] { layoutPlotArea(); });
   view_->setRenderHint(QPainter::Antialiasing, false);
   view_->setFrameShape(QFrame::NoFrame);
+  traces_ = new TraceLayer(chart_);
+  QObject::connect(chart_, &QChart::plotAreaChanged, chart_, [this] { traces_->plotAreaChanged(); });
 }
 
 ChartCanvas::~ChartCanvas() = default;  // the view (and chart) belong to the widget tree
@@ -133,42 +136,29 @@ void ChartCanvas::layoutPlotArea() {
   applyNiceTicks(y_axis_, y_axis_->max() - y_axis_->min(), valueLabelCount(area.height(), y_axis_->labelsFont()));
 }
 
-void ChartCanvas::addSeries(int id, const QString& name, const QColor& colour, Qt::PenStyle style) {
-  if (series_.contains(id)) return;
-  auto* series = new QLineSeries;
-  series->setName(name);
-  series->setUseOpenGL(false);  // software rendering: works on every platform, offscreen included
+void ChartCanvas::addSeries(int id, const QString&, const QColor& colour, Qt::PenStyle style) {
   QPen pen(colour);
-  pen.setWidthF(1.2);
+  pen.setWidthF(1.0);
   pen.setStyle(style);
   pen.setCosmetic(true);
-  series->setPen(pen);
-  chart_->addSeries(series);
-  series->attachAxis(x_axis_);
-  series->attachAxis(y_axis_);
-  series_.insert(id, series);
+  traces_->addTrace(id, pen);
 }
 
-void ChartCanvas::setSeries(int id, const QList<QPointF>& points) {
-  if (QLineSeries* series = series_.value(id)) series->replace(points);
-}
+void ChartCanvas::setSeries(int id, const QList<QPointF>& points) { traces_->setPoints(id, points); }
 
-void ChartCanvas::setSeriesVisible(int id, bool visible) {
-  QLineSeries* series = series_.value(id);
-  if (series == nullptr || series->isVisible() == visible) return;
-  series->setVisible(visible);
-  if (!visible) series->clear();
-}
+void ChartCanvas::setSeriesVisible(int id, bool visible) { traces_->setTraceVisible(id, visible); }
 
 void ChartCanvas::setXRange(double min, double max) {
   if (x_axis_->min() == min && x_axis_->max() == max) return;
   x_axis_->setRange(min, max);
+  traces_->setRanges(min, max, y_axis_->min(), y_axis_->max());
   applyNiceTicks(x_axis_, max - min, kTimeLabels);
 }
 
 void ChartCanvas::setYRange(double min, double max) {
   if (y_axis_->min() == min && y_axis_->max() == max) return;
   y_axis_->setRange(min, max);
+  traces_->setRanges(x_axis_->min(), x_axis_->max(), min, max);
   applyNiceTicks(y_axis_, max - min, valueLabelCount(chart_->plotArea().height(), y_axis_->labelsFont()));
 }
 
@@ -182,20 +172,10 @@ int ChartCanvas::plotHeight() const {
   return height > 10 ? height : std::max(10, view_->height());
 }
 
-bool ChartCanvas::isSeriesVisible(int id) const {
-  const QLineSeries* series = series_.value(id);
-  return series != nullptr && series->isVisible();
-}
+bool ChartCanvas::isSeriesVisible(int id) const { return traces_->isTraceVisible(id); }
 
-QList<QPointF> ChartCanvas::seriesPoints(int id) const {
-  const QLineSeries* series = series_.value(id);
-  return series != nullptr ? series->points() : QList<QPointF>{};
-}
+QList<QPointF> ChartCanvas::seriesPoints(int id) const { return traces_->points(id); }
 
-int ChartCanvas::visibleSeriesCount() const {
-  int count = 0;
-  for (const QLineSeries* series : series_) count += series->isVisible() ? 1 : 0;
-  return count;
-}
+int ChartCanvas::visibleSeriesCount() const { return traces_->visibleCount(); }
 
 }  // namespace rci::ui::plots

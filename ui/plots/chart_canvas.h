@@ -1,15 +1,12 @@
-// ChartCanvas: PlotCanvas on Qt Charts -- one QLineSeries per series, refreshed with a single
-// replace() per frame, software (raster) rendering, value axes set by the caller, and a plot area
-// with a fixed left margin so that stacked charts line up.
+// ChartCanvas: PlotCanvas on Qt Charts -- the chart's axes, grid and titles, with the curves drawn
+// by a TraceLayer inside it (one polyline per series per frame, software rendering), value axes set
+// by the caller, and a plot area with a fixed left margin so that stacked charts line up.
 #pragma once
-
-#include <QHash>
 
 #include "plots/plot_canvas.h"
 
 class QChart;
 class QChartView;
-class QLineSeries;
 class QValueAxis;
 
 namespace rci::ui::plots {
@@ -43,7 +40,7 @@ class ChartCanvas : public PlotCanvas {
   QChartView* view_ = nullptr;
   QValueAxis* x_axis_ = nullptr;
   QValueAxis* y_axis_ = nullptr;
-  QHash<int, QLineSeries*> series_;
+  class TraceLayer* traces_ = nullptr;  // owned by the chart
 };
 
 }  // namespace rci::ui::plots

@@ -37,7 +37,7 @@ class MinMaxDecimator {
 // that joins the points kept around them, so every input point stays within tolerance of the drawn
 // line. Keeps the first and last point and every peak standing more than 2 x tolerance out; x must
 // increase strictly (as decimateMinMax delivers). With tolerance = half a pixel the line looks the same
-// while smooth stretches shrink to a few points -- the cost of a Qt Charts redraw grows with points.
+// while smooth stretches shrink to a few points -- the cost of a redraw grows with points.
 void simplifyWithin(QList<QPointF>& points, double tolerance);
 
 // The whole reduction of one contiguous series; out is cleared first.

@@ -89,9 +89,9 @@ void PlotsWidget::redrawNow() {
 }
 
 void PlotsWidget::drawQuantity(Quantity quantity, const PlotBuffer& source, IndexRange range, double x0, double x1) {
-  // Every axis change makes Qt Charts rebuild each series' geometry (a costly stroke of the whole
-  // line), so the time axis stays put -- x is drawn as seconds relative to the newest sample, [-window, 0]
-  // -- and the value axis moves only on an auto-scale step, before the points are replaced.
+  // The axes stay put, so their labels do not flicker and Qt Charts does not relayout them every
+  // frame: x is drawn as seconds relative to the newest sample, [-window, 0], and the value axis moves
+  // only on an auto-scale step, before the points are replaced.
   PlotCanvas& target = canvas(quantity);
   const int columns = target.plotWidth();
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
