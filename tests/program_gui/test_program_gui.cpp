@@ -3,6 +3,7 @@
 // button, F9 and a DI trigger, save, reopen, go to, replay to within 1e-4 rad / 0.1 mm, pause and
 // resume mid-move, step and stop, a pre-flight refusal naming the instruction, list editing and the
 // unsaved-changes prompt.
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
@@ -191,9 +192,9 @@ void TestProgramGui::panelAndNames() {
   const char* names[] = {"program.record", "program.recordType", "program.recordSpeed", "program.diTrigger",
                          "program.recordState", "program.list", "program.run", "program.pause", "program.resume",
                          "program.stop", "program.step", "program.speed", "program.progress", "program.save",
-                         "program.saveAs", "program.open", "program.new", "program.goto", "program.touchup",
+                         "program.saveAs", "program.open", "program.new", "program.goto", "program.touchup", "program.touchupVia",
                          "program.delete", "program.up", "program.down", "program.duplicate", "program.logicType",
-                         "program.logicSignal", "program.logicValue", "program.logicMs", "program.addLogic",
+                         "program.logicSignal", "program.logicValue", "program.logicMs", "program.addLogic", "program.applyLogic",
                          "program.problems", "program.file", "program.runState", "program.status"};
   for (const char* name : names) QVERIFY2(host_->findChild<QWidget*>(QLatin1String(name)), name);
   auto* speed = find<QSlider>(QStringLiteral("program.speed"));
@@ -404,6 +405,14 @@ void TestProgramGui::listEditing() {
   click(QStringLiteral("program.delete"));
   QCOMPARE(rows(), 3);
   QCOMPARE(cell(1, 2), QStringLiteral("P2"));
+  // Touch-up of a MOVEC's via point (offered for MOVEC only).
+  selectRow(0);
+  QVERIFY(!find<QPushButton>(QStringLiteral("program.touchupVia"))->isEnabled());
+  selectRow(2);
+  const auto target_before = panel_->program().instructions[2].target.q;
+  click(QStringLiteral("program.touchupVia"));
+  QVERIFY(maxAbsDiff(panel_->program().instructions[2].via.q, state().q) < 1e-12);
+  QCOMPARE(panel_->program().instructions[2].target.q, target_before);
   // Type and speed, as the editors would set them.
   QVERIFY(model->setData(model->index(0, 1), QStringLiteral("MOVEL")));
   QCOMPARE(panel_->program().instructions[0].type, InstructionType::kMoveL);
@@ -432,6 +441,32 @@ void TestProgramGui::listEditing() {
   click(QStringLiteral("program.addLogic"));
   QCOMPARE(cell(3, 1), QStringLiteral("SET_DO"));
   QCOMPARE(rows(), 5);
+  // Editing a logic instruction in place: selecting it loads the editor, Apply changes it.
+  auto* ms = find<QSpinBox>(QStringLiteral("program.logicMs"));
+  auto* signal = find<QComboBox>(QStringLiteral("program.logicSignal"));
+  selectRow(0);
+  QVERIFY(!find<QPushButton>(QStringLiteral("program.applyLogic"))->isEnabled());
+  selectRow(2);
+  QCOMPARE(logic->currentText(), QStringLiteral("WAIT_DI"));
+  QCOMPARE(ms->value(), 2000);
+  ms->setValue(0);
+  click(QStringLiteral("program.applyLogic"));  // refused: the instruction keeps its timeout
+  QCOMPARE(panel_->program().instructions[2].timeout_ms, 2000);
+  ms->setValue(1500);
+  signal->setCurrentIndex(signal->findText(QStringLiteral("DI1_0")));
+  find<QCheckBox>(QStringLiteral("program.logicValue"))->setChecked(false);
+  click(QStringLiteral("program.applyLogic"));
+  QCOMPARE(panel_->program().instructions[2].type, InstructionType::kWaitDi);
+  QCOMPARE(panel_->program().instructions[2].timeout_ms, 1500);
+  QCOMPARE(panel_->program().instructions[2].signal, xmate::teach::diIndex("DI1_0"));
+  QVERIFY(!panel_->program().instructions[2].value);
+  QCOMPARE(rows(), 5);
+  // The type can change too: WAIT_DI becomes a WAIT of 250 ms.
+  logic->setCurrentIndex(logic->findText(QStringLiteral("WAIT")));
+  ms->setValue(250);
+  click(QStringLiteral("program.applyLogic"));
+  QCOMPARE(panel_->program().instructions[2].type, InstructionType::kWait);
+  QCOMPARE(panel_->program().instructions[2].ms, 250);
 }
 
 void TestProgramGui::unsavedChangesPrompt() {

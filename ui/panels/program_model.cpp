@@ -89,6 +89,26 @@ bool ProgramModel::replaceTarget(int row, const Target& target) {
   return true;
 }
 
+bool ProgramModel::replaceVia(int row, const Target& via) {
+  if (row < 0 || row >= count() || instruction(row).type != InstructionType::kMoveC) return false;
+  program_.instructions[size_t(row)].via = via;
+  emit dataChanged(index(row, 0), index(row, kColumnCount - 1));
+  emit edited();
+  return true;
+}
+
+bool ProgramModel::replaceLogic(int row, const Instruction& logic) {
+  if (row < 0 || row >= count() || xmate::teach::isMotion(instruction(row).type) || xmate::teach::isMotion(logic.type))
+    return false;
+  Instruction& in = program_.instructions[size_t(row)];
+  const std::string name = in.name;
+  in = logic;
+  in.name = name;
+  emit dataChanged(index(row, 0), index(row, kColumnCount - 1));
+  emit edited();
+  return true;
+}
+
 bool ProgramModel::canChangeType(const Instruction& in, InstructionType to) {
   if (!xmate::teach::isMotion(in.type) || !xmate::teach::isMotion(to)) return false;
   return to != InstructionType::kMoveC || in.type == InstructionType::kMoveC;

@@ -1,6 +1,6 @@
 // ProgramModel: the Program panel's table of instructions (issue 5) -- owns the teach::Program being
 // edited and offers the edits the panel needs (insert, delete, move, duplicate, type, speed, name,
-// touch-up), drag & drop reordering, and the highlight of the instruction that runs.
+// touch-up of target or via, logic parameters), drag & drop reordering, and the highlight of the instruction that runs.
 #pragma once
 
 #include <QAbstractTableModel>
@@ -28,6 +28,9 @@ class ProgramModel : public QAbstractTableModel {
   bool move(int from, int to);  // to: the row the instruction ends up at
   bool duplicate(int row);      // the copy goes right after the original
   bool replaceTarget(int row, const xmate::teach::Target& target);
+  bool replaceVia(int row, const xmate::teach::Target& via);  // MOVEC rows only
+  // Replaces a logic instruction (WAIT, SET_DO, WAIT_DI) with another one, keeping its name.
+  bool replaceLogic(int row, const xmate::teach::Instruction& logic);
   // MOVEJ <-> MOVEL always; MOVEC -> MOVEJ/MOVEL drops the via point; nothing becomes MOVEC (it needs
   // a via point: record one as C).
   static bool canChangeType(const xmate::teach::Instruction& in, xmate::teach::InstructionType to);

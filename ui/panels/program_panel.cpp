@@ -1,5 +1,5 @@
 // Program panel: layout, recording waypoints (button, F9, DI trigger; C takes via then target), and
-// editing the instruction list (reorder, delete, duplicate, type, speed, name, touch-up, logic).
+// editing the instruction list (reorder, delete, duplicate, type, speed, name, touch-up, logic insert/apply).
 #include "panels/program_panel.h"
 
 #include <QAction>
@@ -101,6 +101,7 @@ ProgramPanel::ProgramPanel(Session& session, QWidget* parent)
 
   connect(model_, &ProgramModel::edited, this, &ProgramPanel::programEdited);
   connect(list_->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+    showSelectedLogic();
     updateButtons();
     updateOverlay();
   });
@@ -220,6 +221,8 @@ QWidget* ProgramPanel::buildListGroup() {
   auto* del = makeButton(QStringLiteral("program.delete"), tr("Delete"), tr("Delete the selected instruction"), group);
   auto* touch = makeButton(QStringLiteral("program.touchup"), tr("Touch up"),
                            tr("Replace the selected waypoint's target with the robot's current pose"), group);
+  touch_via_ = makeButton(QStringLiteral("program.touchupVia"), tr("Touch up via"),
+                          tr("Replace the selected MOVEC's via point with the robot's current pose"), group);
   auto* go = makeButton(QStringLiteral("program.goto"), tr("Go to"),
                         tr("Move to the selected waypoint with a joint move (MOVEJ) at no more than 20 % speed"), group);
   for (auto* b : {up, down, dup, del}) {
@@ -228,6 +231,7 @@ QWidget* ProgramPanel::buildListGroup() {
   }
   edit_row->addStretch(1);
   edit_row->addWidget(touch);
+  edit_row->addWidget(touch_via_);
   edit_row->addWidget(go);
   live_buttons_ << touch << go;
   layout->addLayout(edit_row);
@@ -241,7 +245,8 @@ QWidget* ProgramPanel::buildListGroup() {
     const int row = selectedRow();
     if (model_->remove(row)) selectRow(std::min(row, model_->count() - 1));
   });
-  connect(touch, &QPushButton::clicked, this, &ProgramPanel::touchUp);
+  connect(touch, &QPushButton::clicked, this, [this] { touchUp(false); });
+  connect(touch_via_, &QPushButton::clicked, this, [this] { touchUp(true); });
   connect(go, &QPushButton::clicked, this, &ProgramPanel::gotoClicked);
 
   auto* logic = new QHBoxLayout;
@@ -264,16 +269,20 @@ QWidget* ProgramPanel::buildListGroup() {
   logic_ms_->setSuffix(QStringLiteral(" ms"));
   auto* add = makeButton(QStringLiteral("program.addLogic"), tr("Insert"),
                          tr("Insert this instruction after the selected one"), group);
+  apply_logic_ = makeButton(QStringLiteral("program.applyLogic"), tr("Apply"),
+                            tr("Change the selected WAIT, SET_DO or WAIT_DI to these values"), group);
   logic->addWidget(logic_type_);
   logic->addWidget(logic_signal_, 1);
   logic->addWidget(logic_value_);
   logic->addWidget(logic_ms_label_);
   logic->addWidget(logic_ms_);
   logic->addWidget(add);
+  logic->addWidget(apply_logic_);
   layout->addLayout(logic);
   logicTypeChanged();
   connect(logic_type_, &QComboBox::currentIndexChanged, this, &ProgramPanel::logicTypeChanged);
   connect(add, &QPushButton::clicked, this, &ProgramPanel::addLogic);
+  connect(apply_logic_, &QPushButton::clicked, this, &ProgramPanel::applyLogic);
   return group;
 }
 
@@ -458,36 +467,71 @@ void ProgramPanel::logicTypeChanged() {
                             : tr("How long to wait, 0 to 3 600 000 ms"));
 }
 
-void ProgramPanel::addLogic() {
-  if (running_) {
-    showStatus(tr("Insert: a run is active — stop it first."), true);
-    return;
-  }
-  Instruction in;
+bool ProgramPanel::logicFromEditor(size_t row, Instruction& in) {
+  in = Instruction{};
   in.type = InstructionType(logic_type_->currentData().toInt());
   in.signal = std::max(0, logic_signal_->currentData().toInt());
   in.value = logic_value_->isChecked();
   if (in.type == InstructionType::kWait) in.ms = logic_ms_->value();
   if (in.type == InstructionType::kWaitDi) in.timeout_ms = logic_ms_->value();
-  const int row = selectedRow() >= 0 ? selectedRow() + 1 : model_->count();
   try {
-    xmate::teach::validateInstruction(in, size_t(row), program().robot);
+    xmate::teach::validateInstruction(in, row, program().robot);
   } catch (const std::exception& e) {
     markInvalid(logic_ms_, true);
-    showStatus(tr("Not inserted: %1.").arg(QString::fromStdString(e.what())), true);
-    return;
+    showStatus(tr("Not changed: %1.").arg(QString::fromStdString(e.what())), true);
+    return false;
   }
   markInvalid(logic_ms_, false);
+  return true;
+}
+
+void ProgramPanel::addLogic() {
+  if (running_) {
+    showStatus(tr("Insert: a run is active — stop it first."), true);
+    return;
+  }
+  const int row = selectedRow() >= 0 ? selectedRow() + 1 : model_->count();
+  Instruction in;
+  if (!logicFromEditor(size_t(row), in)) return;
   model_->insert(row, in);
   selectRow(row);
   showStatus(tr("Inserted %1 as instruction %2.").arg(QLatin1String(xmate::teach::typeName(in.type))).arg(row + 1), false);
 }
 
-void ProgramPanel::touchUp() {
+void ProgramPanel::applyLogic() {
+  const int row = selectedRow();
+  if (running_ || row < 0 || xmate::teach::isMotion(model_->instruction(row).type)) return;
+  Instruction in;
+  if (!logicFromEditor(size_t(row), in) || !model_->replaceLogic(row, in)) return;
+  showStatus(tr("Instruction %1 is now %2.").arg(row + 1).arg(ProgramModel::details(model_->instruction(row))), false);
+}
+
+void ProgramPanel::showSelectedLogic() {
+  const int row = selectedRow();
+  if (row < 0) return;
+  const Instruction& in = model_->instruction(row);
+  if (xmate::teach::isMotion(in.type)) return;
+  logic_type_->setCurrentIndex(logic_type_->findData(int(in.type)));  // refills the signal list
+  if (in.type != InstructionType::kWait) logic_signal_->setCurrentIndex(logic_signal_->findData(in.signal));
+  logic_value_->setChecked(in.value);
+  if (in.type == InstructionType::kWait) logic_ms_->setValue(in.ms);
+  if (in.type == InstructionType::kWaitDi) logic_ms_->setValue(in.timeout_ms);
+  markInvalid(logic_ms_, false);
+}
+
+void ProgramPanel::touchUp(bool via) {
   const int row = selectedRow();
   if (row < 0 || !haveLiveState() || running_) return;
-  const xmate::XmateType type = program().robot;
-  if (!model_->replaceTarget(row, xmate::teach::targetFromState(session().live().state, type))) {
+  const xmate::teach::Target pose = xmate::teach::targetFromState(session().live().state, program().robot);
+  if (via) {
+    if (!model_->replaceVia(row, pose)) {
+      showStatus(tr("Touch up via: select a MOVEC instruction."), true);
+      return;
+    }
+    showStatus(tr("Touched up instruction %1: its via point is now the current pose.").arg(row + 1), false);
+    return;
+  }
+  if (!model_->replaceTarget(row, pose)) {
     showStatus(tr("Touch up: select a move instruction (MOVEJ, MOVEL or MOVEC)."), true);
     return;
   }
@@ -531,6 +575,9 @@ void ProgramPanel::updateButtons() {
   edit_buttons_[0]->setEnabled(row > 0 && !running_);
   edit_buttons_[1]->setEnabled(row >= 0 && row + 1 < model_->count() && !running_);
   for (auto* b : live_buttons_) b->setEnabled(motion && haveLiveState() && !running_);
+  touch_via_->setEnabled(motion && model_->instruction(row).type == InstructionType::kMoveC && haveLiveState() &&
+                         !running_);
+  apply_logic_->setEnabled(row >= 0 && !motion && !running_);
   record_->setEnabled(haveLiveState() && !running_);
   // The list is read-only while a run highlights its instructions.
   list_->setEditTriggers(running_ ? QAbstractItemView::NoEditTriggers

@@ -82,8 +82,12 @@ class ProgramPanel : public PanelBase {
   void cancelPendingVia();
   void resetDiTrigger();
   void addLogic();
+  void applyLogic();
+  // The logic editor's values as an instruction; false (with the reason shown) if they are refused.
+  bool logicFromEditor(size_t row, xmate::teach::Instruction& in);
+  void showSelectedLogic();  // loads a selected WAIT / SET_DO / WAIT_DI into the logic editor
   void logicTypeChanged();
-  void touchUp();
+  void touchUp(bool via);  // the selected move's target, or a MOVEC's via point
   void moveSelected(int delta);
   int selectedRow() const;
   void selectRow(int row);
@@ -142,6 +146,8 @@ class ProgramPanel : public PanelBase {
   QCheckBox* logic_value_ = nullptr;
   QSpinBox* logic_ms_ = nullptr;
   QLabel* logic_ms_label_ = nullptr;
+  QPushButton* apply_logic_ = nullptr;
+  QPushButton* touch_via_ = nullptr;
   QList<QPushButton*> edit_buttons_;   // need a selection, disabled while running
   QList<QPushButton*> live_buttons_;   // need a selection and the robot's state (touch-up, go to)
 
