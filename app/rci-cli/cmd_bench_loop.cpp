@@ -61,16 +61,11 @@ LoopOptions parse(Args& args) {
 }
 
 std::unique_ptr<xmate::sim::Server> startSimulator(const LoopOptions& o) {
-  xmate::sim::ServerConfig c;
-  c.bind_ip = "127.0.0.1";
-  c.port = 0;
-  c.clock = o.lockstep ? xmate::sim::ClockMode::kLockStep : xmate::sim::ClockMode::kRealTime;
-  c.realtime = true;
-  c.sim.type = o.type;
-  c.sim.motors_on_at_start = true;
-  auto server = std::make_unique<xmate::sim::Server>(std::move(c));
-  server->start();
-  return server;
+  auto config = xmate::sim::embeddedConfig(
+      o.type, o.lockstep ? xmate::sim::ClockMode::kLockStep : xmate::sim::ClockMode::kRealTime);
+  config.realtime = true;
+  config.sim.motors_on_at_start = true;
+  return xmate::sim::startEmbedded(std::move(config));
 }
 
 // Runs the loop: q1(t) = q1(0) + A sin^2(pi t / T), at rest at both ends.

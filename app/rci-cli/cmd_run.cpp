@@ -76,16 +76,10 @@ RunOptions parseRunOptions(Args& args) {
 }
 
 std::unique_ptr<xmate::sim::Server> startSimulator(xmate::XmateType type) {
-  xmate::sim::ServerConfig c;
-  c.bind_ip = "127.0.0.1";
-  c.port = 0;
-  c.clock = xmate::sim::ClockMode::kLockStep;  // deterministic on a loaded machine
-  c.sim.type = type;
-  c.sim.motors_on_at_start = true;
-  c.sim.do_to_di_loopback = true;  // DO k drives DI k, so SET_DO / WAIT_DI pairs work without wiring
-  auto server = std::make_unique<xmate::sim::Server>(std::move(c));
-  server->start();
-  return server;
+  auto config = xmate::sim::embeddedConfig(type, xmate::sim::ClockMode::kLockStep);  // deterministic under load
+  config.sim.motors_on_at_start = true;
+  config.sim.do_to_di_loopback = true;  // DO k drives DI k, so SET_DO / WAIT_DI pairs work without wiring
+  return xmate::sim::startEmbedded(std::move(config));
 }
 
 void printDone(const Program& program, size_t i, const InstructionReport& r) {

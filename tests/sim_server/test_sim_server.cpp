@@ -420,6 +420,25 @@ class TestSimServer : public QObject {
     }
     QVERIFY(!second.running());
   }
+
+  // The in-process simulator of the GUI and rci-cli: loopback, a free port, started, and a start
+  // failure wrapped in a message that names the built-in simulator.
+  void embeddedSimulatorStartsOnLoopback() {
+    auto config = sim::embeddedConfig(xmate::XMATE3_PRO, sim::ClockMode::kLockStep);
+    QCOMPARE(config.bind_ip, std::string("127.0.0.1"));
+    auto server = sim::startEmbedded(config);
+    QVERIFY(server->running());
+    QVERIFY(server->port() != 0);
+    QCOMPARE(server->status().clock, sim::ClockMode::kLockStep);
+    config.port = server->port();
+    try {
+      (void)sim::startEmbedded(config);
+      QFAIL("a second simulator on the same port must not start");
+    } catch (const std::runtime_error& e) {
+      QVERIFY2(QString(e.what()).startsWith("The built-in simulator could not start:"), e.what());
+      QVERIFY2(QString(e.what()).contains("in use"), e.what());
+    }
+  }
 };
 
 QTEST_APPLESS_MAIN(TestSimServer)

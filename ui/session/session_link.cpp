@@ -4,27 +4,16 @@
 #include <chrono>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace rci::ui {
 namespace {
 
 std::unique_ptr<xmate::sim::Server> startSimulator(const SessionTarget& target) {
-  xmate::sim::ServerConfig config;
-  config.bind_ip = "127.0.0.1";
-  config.port = 0;
-  config.clock = target.lockstep ? xmate::sim::ClockMode::kLockStep : xmate::sim::ClockMode::kRealTime;
-  config.realtime = false;
-  config.sim.type = target.type;
+  auto config = xmate::sim::embeddedConfig(
+      target.type, target.lockstep ? xmate::sim::ClockMode::kLockStep : xmate::sim::ClockMode::kRealTime);
   config.sim.do_to_di_loopback = target.loopback;
-  auto server = std::make_unique<xmate::sim::Server>(config);
-  try {
-    server->start();
-  } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("The built-in simulator could not start: ") + e.what() +
-                             ". Check that the robot descriptions are installed (share/rci) or set "
-                             "RCI_DATA_DIR to the source tree.");
-  }
-  return server;
+  return xmate::sim::startEmbedded(std::move(config));
 }
 
 std::string robotFailure(const SessionTarget& target, const std::exception& e) {

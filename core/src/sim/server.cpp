@@ -350,4 +350,25 @@ RCI::robot::RobotState Server::latestState() const {
   return impl_->snapshot.state;
 }
 
+ServerConfig embeddedConfig(XmateType type, ClockMode clock) {
+  ServerConfig config;
+  config.bind_ip = "127.0.0.1";
+  config.port = 0;
+  config.clock = clock;
+  config.sim.type = type;
+  return config;
+}
+
+std::unique_ptr<Server> startEmbedded(ServerConfig config) {
+  auto server = std::make_unique<Server>(std::move(config));
+  try {
+    server->start();
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("The built-in simulator could not start: ") + e.what() +
+                             ". Check that the robot descriptions are installed (share/rci) or set "
+                             "RCI_DATA_DIR to the source tree.");
+  }
+  return server;
+}
+
 }  // namespace xmate::sim

@@ -142,4 +142,10 @@ class Server {
   std::unique_ptr<Impl> impl_;
 };
 
+// A simulator for a client in the same process (the GUI, rci-cli run, rci-cli bench loop): bound to
+// loopback on a free port, with the given model and clock. Callers adjust the rest before starting it.
+ServerConfig embeddedConfig(XmateType type, ClockMode clock);
+// Creates and starts the server; throws std::runtime_error naming the failure and the likely fix.
+std::unique_ptr<Server> startEmbedded(ServerConfig config);
+
 }  // namespace xmate::sim
