@@ -1,5 +1,6 @@
 // The 3D view without a display: the factory's placeholder (no hang under the offscreen platform),
-// link meshes of every model through assimp, link poses against the core's FK, tints, camera maths.
+// link meshes of every model through assimp, link poses against the core's FK, tints, camera maths,
+// recognising software OpenGL renderers.
 #include <QLabel>
 #include <QSignalSpy>
 #include <QtTest>
@@ -13,6 +14,7 @@
 #include "model/urdf_loader.h"
 #include "session/session.h"
 #include "view3d/arm_poser.h"
+#include "view3d/gl_probe.h"
 #include "view3d/link_tints.h"
 #include "view3d/mesh_data.h"
 #include "view3d/orbit_camera.h"
@@ -56,6 +58,7 @@ class TestView3dOffscreen : public QObject {
   void sceneShowsBoxWaypointsPath();
   void springForceIsClamped();
   void cameraRayHitsProjectedPoint();
+  void softwareRenderersAreRecognised();
 };
 
 void TestView3dOffscreen::factoryReturnsPlaceholder() {
@@ -260,6 +263,15 @@ void TestView3dOffscreen::cameraRayHitsProjectedPoint() {
   camera.pan(50, 0, 600);
   QVERIFY(camera.project(before, viewport, pixel));
   QVERIFY2(std::abs(pixel.x() - 450) < 0.5, qPrintable(QString::number(pixel.x())));
+}
+
+void TestView3dOffscreen::softwareRenderersAreRecognised() {
+  QVERIFY(isSoftwareRenderer(QStringLiteral("llvmpipe (LLVM 15.0.6, 256 bits)")));
+  QVERIFY(isSoftwareRenderer(QStringLiteral("softpipe")));
+  QVERIFY(isSoftwareRenderer(QStringLiteral("Mesa X11 Software Rasterizer")));
+  QVERIFY(!isSoftwareRenderer(QStringLiteral("Mesa Intel(R) UHD Graphics 620 (KBL GT2)")));
+  QVERIFY(!isSoftwareRenderer(QStringLiteral("NVIDIA GeForce RTX 3060/PCIe/SSE2")));
+  QVERIFY(!isSoftwareRenderer(QString()));
 }
 
 QTEST_MAIN(TestView3dOffscreen)

@@ -1,6 +1,9 @@
 // The 3D view drawing for real (xvfb-run + Mesa): the robot is visible and upright in a capture, a
-// different pose changes the picture, every model renders, pointer events orbit/pan/zoom/pull, and
-// a Session with the simulator drives it. Set RCI_VIEW3D_PNG_DIR to keep the captures as PNG files.
+// different pose changes the picture, every model renders, pointer events orbit/pan/zoom/pull, a
+// Session with the simulator drives it, and software OpenGL gets a live-update budget.
+// Set RCI_VIEW3D_PNG_DIR to keep the captures as PNG files.
+#include <QElapsedTimer>
+#include <QLabel>
 #include <QScreen>
 #include <QSignalSpy>
 #include <QtTest>
@@ -91,6 +94,7 @@ class TestView3dRender : public QObject {
   void pointerOrbitsPansZooms();
   void factoryViewCaptures();
   void followsTheSimulator();
+  void softwareGlHasALiveUpdateBudget();
 };
 
 void TestView3dRender::rendersTheRobot() {
@@ -309,6 +313,24 @@ void TestView3dRender::followsTheSimulator() {
   view->endPull();
   QTRY_VERIFY_WITH_TIMEOUT(wrench() == (std::array<double, 6>{}), 5000);
   session.close();
+}
+
+// With OpenGL on the CPU (Mesa llvmpipe, as under xvfb without a GPU), live poses are drawn at
+// most kSoftwareLiveHz times a second, and the hint says so.
+void TestView3dRender::softwareGlHasALiveUpdateBudget() {
+  RobotView view;
+  QVERIFY(view.is3D());
+  if (!view.softwareRendered()) QSKIP("OpenGL runs on a GPU here: every live update is drawn");
+  QVERIFY(view.liveUpdateDue());
+  QElapsedTimer clock;
+  clock.start();
+  const bool again = view.liveUpdateDue();
+  if (clock.elapsed() < 1000 / RobotView::kSoftwareLiveHz / 2) QVERIFY(!again);  // unless this thread stalled
+  QTest::qWait(1000 / RobotView::kSoftwareLiveHz + 20);
+  QVERIFY(view.liveUpdateDue());
+  auto* hint = view.findChild<QLabel*>(QStringLiteral("robotViewHint"));
+  QVERIFY(hint);
+  QVERIFY2(hint->text().contains(QStringLiteral("Software OpenGL")), qPrintable(hint->text()));
 }
 
 QTEST_MAIN(TestView3dRender)

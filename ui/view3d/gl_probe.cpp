@@ -5,6 +5,7 @@
 #include <QGuiApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 
 namespace rci::ui {
 
@@ -22,8 +23,18 @@ GlProbe probeOpenGl() {
   if (!context.makeCurrent(&surface)) {
     return {false, QCoreApplication::translate("RobotView", "the OpenGL context could not be made current")};
   }
+  GlProbe probe{true, {}, {}, false};
+  const auto* name = reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
+  probe.renderer = name != nullptr ? QString::fromLatin1(name) : QString();
+  probe.software = isSoftwareRenderer(probe.renderer);
   context.doneCurrent();
-  return {true, {}};
+  return probe;
+}
+
+bool isSoftwareRenderer(const QString& renderer) {
+  for (const char* cpu : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer", "SwiftShader"})
+    if (renderer.contains(QLatin1String(cpu), Qt::CaseInsensitive)) return true;
+  return false;
 }
 
 }  // namespace rci::ui

@@ -8,11 +8,16 @@ namespace rci::ui {
 
 struct GlProbe {
   bool ok = false;
-  QString reason;  // why not (empty when ok)
+  QString reason;    // why not (empty when ok)
+  QString renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  bool software = false;  // rendered on the CPU (Mesa llvmpipe, softpipe, swrast)
 };
 
+// True for the GL_RENDERER strings of CPU rasterisers.
+bool isSoftwareRenderer(const QString& renderer);
+
 // False on the "offscreen" and "minimal" platforms, or when no OpenGL context can be created and
-// made current on an offscreen surface. Needs a QGuiApplication.
+// made current on an offscreen surface; otherwise also names the renderer. Needs a QGuiApplication.
 GlProbe probeOpenGl();
 
 }  // namespace rci::ui

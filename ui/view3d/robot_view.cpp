@@ -32,13 +32,17 @@ const QColor kBackground(0x2f, 0x34, 0x3b);
 
 }  // namespace
 
-QString RobotView::defaultHint() {
-  return tr("Drag: orbit  ·  Right-drag: pan  ·  Wheel: zoom  ·  Shift+drag TCP: pull");
+QString RobotView::defaultHint() const {
+  const QString hint = tr("Drag: orbit  ·  Right-drag: pan  ·  Wheel: zoom  ·  Shift+drag TCP: pull");
+  if (!software_) return hint;
+  return hint + tr("  ·  Software OpenGL: the pose is redrawn %1× a second").arg(kSoftwareLiveHz);
 }
 
 RobotView::RobotView(QWidget* parent) : QWidget(parent) {
   setMinimumSize(240, 200);
   const GlProbe probe = probeOpenGl();
+  software_ = probe.software;
+  renderer_ = probe.renderer;
   if (probe.ok) build3D();
   else buildPlaceholder(probe.reason);
 }
@@ -90,7 +94,12 @@ void RobotView::build3D() {
   hint_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);  // may be cut, never widens the view
   hint_->setToolTip(tr("Left drag: orbit. Right or middle drag: pan. Wheel: zoom. Double-click: reset view.\n"
                        "Shift + left drag starting on the TCP: pull the robot with a spring (built-in simulator in "
-                       "drag mode, at most %1 N).").arg(double(kPullMaxForce), 0, 'f', 0));
+                       "drag mode, at most %1 N).").arg(double(kPullMaxForce), 0, 'f', 0) +
+                    (software_ ? tr("\nOpenGL runs on the CPU here (%1), so the live pose is redrawn only %2 times a "
+                                    "second to leave the CPU to the real-time loop; a GPU redraws it 30 times a second.")
+                                     .arg(renderer_)
+                                     .arg(kSoftwareLiveHz)
+                               : QString()));
   auto* reset = new QToolButton(bar);
   reset->setText(tr("Reset view"));
   reset->setToolTip(tr("Frame the whole arm from the default viewpoint (or double-click the view)"));
@@ -122,6 +131,13 @@ void RobotView::setModel(xmate::XmateType type) {
     failed_model_ = type;
     showHint(tr("Cannot show the robot: %1").arg(QString::fromStdString(e.what())));
   }
+}
+
+bool RobotView::liveUpdateDue() {
+  if (!software_) return true;
+  if (last_live_update_.isValid() && last_live_update_.elapsed() < 1000 / kSoftwareLiveHz) return false;
+  last_live_update_.start();
+  return true;
 }
 
 void RobotView::setJointPositions(const std::array<double, 7>& q) {

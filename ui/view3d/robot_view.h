@@ -3,6 +3,7 @@
 // OpenGL (e.g. the offscreen platform) it shows a placeholder saying why, and the setters do nothing.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QMatrix4x4>
 #include <QPointF>
@@ -42,6 +43,15 @@ class RobotView : public QWidget {
   // False when the view is the placeholder (no OpenGL); unavailableReason() says why.
   bool is3D() const { return window_ != nullptr; }
   QString unavailableReason() const { return reason_; }
+  // OpenGL runs on the CPU (Mesa llvmpipe: no GPU, a VM, xvfb). Each Qt3D frame then costs tens of
+  // milliseconds of CPU on every core, so live poses are shown at most kSoftwareLiveHz times a
+  // second, which keeps the CPU for the real-time loop; a GPU redraws at the session's 30 Hz.
+  bool softwareRendered() const { return software_; }
+  static constexpr int kSoftwareLiveHz = 5;
+  // Whether a live update (pose, TCP, tints) should be drawn now; true at most kSoftwareLiveHz
+  // times a second with software OpenGL, always otherwise. Updates skipped are superseded by the
+  // next one (the session keeps ticking at rest, so the final pose is always drawn).
+  bool liveUpdateDue();
 
   // The robot model drawn (xMate7 Pro until set). Loads its URDF and meshes; on failure shows the
   // error in the view and keeps the previous model.
@@ -94,7 +104,7 @@ class RobotView : public QWidget {
   void updatePull();
   void requestCapture(const std::function<void(const QImage&)>& finish, int retries);
   void showHint(const QString& text);
-  static QString defaultHint();
+  QString defaultHint() const;
   QSizeF viewport() const;
 
   Qt3DExtras::Qt3DWindow* window_ = nullptr;
@@ -103,6 +113,9 @@ class RobotView : public QWidget {
   std::unique_ptr<RobotScene> scene_;
   QLabel* hint_ = nullptr;
   QString reason_;
+  bool software_ = false;
+  QString renderer_;  // GL_RENDERER
+  QElapsedTimer last_live_update_;
   xmate::XmateType type_ = xmate::XMATE7_PRO;
   std::optional<xmate::XmateType> failed_model_;  // the last model that could not be loaded
   OrbitCamera camera_;

@@ -50,6 +50,7 @@ void showLiveState(RobotView& view, Session& session) {
   const LiveState& live = session.live();
   if (!session.isOpen() || !live.has_state) return;
   if (view.model() != session.target().type) view.setModel(session.target().type);
+  if (!view.liveUpdateDue()) return;
   view.setJointPositions(live.state.q);
   view.setTcpPose(live.state.toolTobase_pos_m);
   view.setLinkTints(tintsOf(session));
