@@ -316,7 +316,7 @@ void TestView3dRender::followsTheSimulator() {
 }
 
 // With OpenGL on the CPU (Mesa llvmpipe, as under xvfb without a GPU), live poses are drawn at
-// most kSoftwareLiveHz times a second, and the hint says so.
+// most kSoftwareLiveHz times a second, and a note beside the hint says so.
 void TestView3dRender::softwareGlHasALiveUpdateBudget() {
   RobotView view;
   QVERIFY(view.is3D());
@@ -328,9 +328,10 @@ void TestView3dRender::softwareGlHasALiveUpdateBudget() {
   if (clock.elapsed() < 1000 / RobotView::kSoftwareLiveHz / 2) QVERIFY(!again);  // unless this thread stalled
   QTest::qWait(1000 / RobotView::kSoftwareLiveHz + 20);
   QVERIFY(view.liveUpdateDue());
-  auto* hint = view.findChild<QLabel*>(QStringLiteral("robotViewHint"));
-  QVERIFY(hint);
-  QVERIFY2(hint->text().contains(QStringLiteral("Software OpenGL")), qPrintable(hint->text()));
+  auto* note = view.findChild<QLabel*>(QStringLiteral("robotViewRenderNote"));
+  QVERIFY(note);
+  QVERIFY2(note->text().contains(QStringLiteral("Software OpenGL")), qPrintable(note->text()));
+  QVERIFY2(note->toolTip().contains(QStringLiteral("OpenGL runs on the CPU here")), qPrintable(note->toolTip()));
 }
 
 QTEST_MAIN(TestView3dRender)

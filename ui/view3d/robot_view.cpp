@@ -32,10 +32,8 @@ const QColor kBackground(0x2f, 0x34, 0x3b);
 
 }  // namespace
 
-QString RobotView::defaultHint() const {
-  const QString hint = tr("Drag: orbit  ·  Right-drag: pan  ·  Wheel: zoom  ·  Shift+drag TCP: pull");
-  if (!software_) return hint;
-  return hint + tr("  ·  Software OpenGL: the pose is redrawn %1× a second").arg(kSoftwareLiveHz);
+QString RobotView::defaultHint() {
+  return tr("Drag: orbit  ·  Right-drag: pan  ·  Wheel: zoom  ·  Shift+drag TCP: pull");
 }
 
 RobotView::RobotView(QWidget* parent) : QWidget(parent) {
@@ -94,17 +92,22 @@ void RobotView::build3D() {
   hint_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);  // may be cut, never widens the view
   hint_->setToolTip(tr("Left drag: orbit. Right or middle drag: pan. Wheel: zoom. Double-click: reset view.\n"
                        "Shift + left drag starting on the TCP: pull the robot with a spring (built-in simulator in "
-                       "drag mode, at most %1 N).").arg(double(kPullMaxForce), 0, 'f', 0) +
-                    (software_ ? tr("\nOpenGL runs on the CPU here (%1), so the live pose is redrawn only %2 times a "
-                                    "second to leave the CPU to the real-time loop; a GPU redraws it 30 times a second.")
-                                     .arg(renderer_)
-                                     .arg(kSoftwareLiveHz)
-                               : QString()));
+                       "drag mode, at most %1 N).").arg(double(kPullMaxForce), 0, 'f', 0));
   auto* reset = new QToolButton(bar);
   reset->setText(tr("Reset view"));
   reset->setToolTip(tr("Frame the whole arm from the default viewpoint (or double-click the view)"));
   connect(reset, &QToolButton::clicked, this, &RobotView::resetView);
   bar_layout->addWidget(hint_, 1);
+  if (software_) {  // why the arm moves in steps: said where it is seen, not only in a tooltip
+    auto* note = new QLabel(tr("Software OpenGL: %1 redraws/s").arg(kSoftwareLiveHz), bar);
+    note->setObjectName(QStringLiteral("robotViewRenderNote"));
+    note->setForegroundRole(QPalette::PlaceholderText);
+    note->setToolTip(tr("OpenGL runs on the CPU here (%1), so the live pose is redrawn only %2 times a second to "
+                        "leave the CPU to the real-time loop; with a GPU it is redrawn 30 times a second.")
+                         .arg(renderer_)
+                         .arg(kSoftwareLiveHz));
+    bar_layout->addWidget(note);
+  }
   bar_layout->addWidget(reset);
   layout->addWidget(bar);
   container_ = QWidget::createWindowContainer(window_, this);

@@ -104,7 +104,7 @@ class RobotView : public QWidget {
   void updatePull();
   void requestCapture(const std::function<void(const QImage&)>& finish, int retries);
   void showHint(const QString& text);
-  QString defaultHint() const;
+  static QString defaultHint();
   QSizeF viewport() const;
 
   Qt3DExtras::Qt3DWindow* window_ = nullptr;
