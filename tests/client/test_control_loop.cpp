@@ -224,14 +224,20 @@ void TestControlLoop::samplesAndCountersFollowTheRun() {
   while (session.samples().popBatch(drain, 512) > 0) {
   }
   const auto before = session.timing().counters;
+  const uint64_t received_before = server->status().counters.commands_received;
   robot->startMove(CM::kJointPosition, MM::kJointPosition);
   robot->Control(holdStill(400));
   QVERIFY(eventually([&] { return session.timing().counters.commands_sent >= before.commands_sent + 400; }, 2000));
   const auto after = session.timing();
-  // 400 answers from the callback, plus the few "hold" answers sent before the controller reported
-  // the motion running (Connection::runControl).
+  // 400 answers from the callback, plus the "hold" answers sent before the controller reported the
+  // motion running (Connection::runControl): a few, or hundreds on a loaded machine. The client's
+  // count is exact: the controller received every one of them.
   const uint64_t sent = after.counters.commands_sent - before.commands_sent;
-  QVERIFY2(sent >= 400 && sent <= 405, qPrintable(QString::number(sent)));
+  QVERIFY2(sent >= 400, qPrintable(QString::number(sent)));
+  QVERIFY2(eventually([&] { return server->status().counters.commands_received - received_before == sent; }, 2000),
+           qPrintable(QStringLiteral("sent %1, received %2")
+                          .arg(sent)
+                          .arg(server->status().counters.commands_received - received_before)));
   QCOMPARE(after.counters.send_failures, uint64_t(0));
   QVERIFY(after.cost.cycles >= 400);
   // The ring saw the motion: consecutive message_ids, some in kMove.
