@@ -257,6 +257,8 @@ void TestFaults::packetLossLeadsToInstability() {
   double lowest_rate = 1.0;
   for (const ControlRecord& r : e.log) lowest_rate = std::min(lowest_rate, r.state.control_command_success_rate);
   QVERIFY2(lowest_rate < 0.9, qPrintable(QString::number(lowest_rate)));
+  // The message quotes that lowest rate, not the 1.00 the controller reports once out of kMove.
+  QVERIFY2(QString(e.what()).contains(QStringLiteral("lowest command success rate 0.")), e.what());
 }
 
 void TestFaults::reorderedStatesAreDropped() {

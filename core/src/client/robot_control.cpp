@@ -2,8 +2,10 @@
 // the conversion of how the run ended (client::ControlOutcome) into the API's exceptions.
 #include <xmate/robot.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include "client/connection.h"
 #include "client/error_bits.h"
@@ -60,11 +62,15 @@ const char* pairFor(ControlKind kind) {
   return "startMove";
 }
 
-std::string where(const RCI::robot::RobotState& s) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "at message_id %llu (robot_mode %s, command success rate %.2f)",
-                static_cast<unsigned long long>(s.message_id), client::robotModeName(s.robot_mode),
-                s.control_command_success_rate);
+// Where the motion ended. The success rate quoted is the lowest the controller reported during the
+// motion (the log's last cycles): once it leaves kMove it reports 1.0, which would hide lost commands.
+std::string where(const RCI::robot::RobotState& s, const std::vector<ControlRecord>& log) {
+  double lowest = s.control_command_success_rate;
+  for (const ControlRecord& r : log)
+    if (r.state.robot_mode == RCI::robot::RobotMode::kMove) lowest = std::min(lowest, r.state.control_command_success_rate);
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "at message_id %llu (robot_mode %s, lowest command success rate %.2f)",
+                static_cast<unsigned long long>(s.message_id), client::robotModeName(s.robot_mode), lowest);
   return buf;
 }
 
@@ -121,22 +127,22 @@ void stopQuietly(Robot& robot) {
   switch (r.outcome) {
     case ControlOutcome::kFinished: break;
     case ControlOutcome::kControllerError:
-      throw ControlException(call + ": the controller stopped the motion " + where(s) + " with error bits " +
+      throw ControlException(call + ": the controller stopped the motion " + where(s, r.log) + " with error bits " +
                                  client::describeErrors(s.errors) + ". Then call automaticErrorRecovery().",
                              s.errors, r.log);
     case ControlOutcome::kEndedByController:
-      throw ControlException(call + ": the controller ended the motion without error bits " + where(s) +
+      throw ControlException(call + ": the controller ended the motion without error bits " + where(s, r.log) +
                                  ": a guard or emergency stop, or stopMove() from elsewhere; check "
                                  "getSafetyStopState() and start the motion again",
                              s.errors, r.log);
     case ControlOutcome::kNotStarted:
       throw ControlException(call + ": the controller did not start the motion within 1 s of startMove() " +
-                                 where(s) + "; call startMove() again right before Control()",
+                                 where(s, r.log) + "; call startMove() again right before Control()",
                              s.errors, r.log);
     case ControlOutcome::kFinishNotAcknowledged:
       stopQuietly(robot);
       throw ControlException(call + ": the controller kept moving for 200 ms after the final command "
-                                    "(motion_generation_finished) " + where(s) + "; the motion was stopped with stopMove()",
+                                    "(motion_generation_finished) " + where(s, r.log) + "; the motion was stopped with stopMove()",
                              s.errors, r.log);
     case ControlOutcome::kCallbackThrew:
       stopQuietly(robot);
