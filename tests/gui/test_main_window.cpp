@@ -17,7 +17,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "net/tcp_socket.h"
+#include "gui_test_support.h"
 #include "session/session.h"
 #include "window/banner.h"
 #include "window/connection_bar.h"
@@ -26,25 +26,12 @@
 
 using namespace rci::ui;
 
+using rci::ui::test::lockstepSimulator;
+using rci::ui::test::unusedPort;
+
 namespace {
 
 constexpr int kWaitMs = 20000;  // a safety net for a loaded machine, not a timing claim
-
-SessionTarget lockstepSimulator() {
-  SessionTarget target;
-  target.kind = SessionTarget::Kind::kSimulator;
-  target.lockstep = true;
-  target.loopback = true;
-  return target;
-}
-
-uint16_t unusedPort() {
-  xmate::net::TcpListener listener;
-  listener.listen("127.0.0.1", 0);
-  const uint16_t port = listener.localPort();
-  listener.close();
-  return port;
-}
 
 }  // namespace
 

@@ -5,29 +5,15 @@
 
 #include <xmate/move.h>
 
-#include "net/tcp_socket.h"
+#include "gui_test_support.h"
 #include "session/session.h"
 
 using rci::ui::Session;
 using rci::ui::SessionTarget;
+using rci::ui::test::lockstepSimulator;
+using rci::ui::test::unusedPort;
 
 namespace {
-
-SessionTarget lockstepSimulator() {
-  SessionTarget target;
-  target.kind = SessionTarget::Kind::kSimulator;
-  target.lockstep = true;
-  target.loopback = true;
-  return target;
-}
-
-uint16_t unusedPort() {
-  xmate::net::TcpListener listener;
-  listener.listen("127.0.0.1", 0);
-  const uint16_t port = listener.localPort();
-  listener.close();
-  return port;
-}
 
 // Holds the joints still until the session asks to stop (or ~60 s of cycles pass), then finishes.
 void holdUntilStopped(Session& session, xmate::Robot& robot, int* cycles) {

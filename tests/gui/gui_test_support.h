@@ -1,0 +1,30 @@
+// Helpers shared by the tests of tests/gui/ (test_session, test_main_window).
+#pragma once
+
+#include <cstdint>
+
+#include "net/tcp_socket.h"
+#include "session/session.h"
+
+namespace rci::ui::test {
+
+// The embedded simulator with the lock-step clock (deterministic on a loaded machine) and the
+// DO -> DI loop-back.
+inline SessionTarget lockstepSimulator() {
+  SessionTarget target;
+  target.kind = SessionTarget::Kind::kSimulator;
+  target.lockstep = true;
+  target.loopback = true;
+  return target;
+}
+
+// A TCP port nobody listens on (bound and released again).
+inline uint16_t unusedPort() {
+  xmate::net::TcpListener listener;
+  listener.listen("127.0.0.1", 0);
+  const uint16_t port = listener.localPort();
+  listener.close();
+  return port;
+}
+
+}  // namespace rci::ui::test
