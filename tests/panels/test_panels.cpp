@@ -349,8 +349,9 @@ void TestPanels::collisionShowsInSafetyPanelAndRecovers() {
   click(QStringLiteral("sim.wrench.apply"));
   QTRY_VERIFY_WITH_TIMEOUT(lampOn(QStringLiteral("safety.bit15")), kWaitMs);
   const QString details = find<QLabel>(QStringLiteral("safety.details"))->text();
-  QVERIFY2(details.contains(QStringLiteral("kCollision")), qPrintable(details));
-  QVERIFY2(details.contains(QStringLiteral("Remedy")), qPrintable(details));
+  QVERIFY2(details.contains(QStringLiteral("Collision detected")), qPrintable(details));
+  QVERIFY2(details.contains(QStringLiteral("What to do")), qPrintable(details));
+  QVERIFY2(!details.contains(QStringLiteral("kCollision")), qPrintable(details));  // the enum only in a tooltip
   QVERIFY2(details.contains(QStringLiteral("raise the thresholds")), qPrintable(details));
   QTRY_VERIFY_WITH_TIMEOUT(!lampOn(QStringLiteral("power.lamp")), kWaitMs);  // motors off after a collision
 

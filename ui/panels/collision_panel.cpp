@@ -46,7 +46,7 @@ CollisionPanel::CollisionPanel(Session& session, QWidget* parent)
   grid->addWidget(message_, 8, 0, 1, 3);
   auto* apply = new QPushButton(tr("Apply"), group);
   apply->setObjectName(QStringLiteral("collision.apply"));
-  apply->setToolTip(tr("Send the thresholds (setCollisionBehavior); they act while the robot is position-controlled"));
+  apply->setToolTip(tr("Send the thresholds to the robot; they act while the robot holds or follows a position"));
   addSendWidget(apply);
   connect(apply, &QPushButton::clicked, this, &CollisionPanel::apply);
   auto* row = new QHBoxLayout;

@@ -49,10 +49,10 @@ DragPanel::DragPanel(Session& session, QWidget* parent)
   auto* buttons = new QHBoxLayout;
   auto* start = new QPushButton(tr("Start guiding"), group);
   start->setObjectName(QStringLiteral("drag.start"));
-  start->setToolTip(tr("Start hand guiding (startDrag); needs motors on and no motion running"));
+  start->setToolTip(tr("Start hand guiding: the arm yields to your hand; needs the motors on and no motion running"));
   auto* stop = new QPushButton(tr("Stop guiding"), group);
   stop->setObjectName(QStringLiteral("drag.stop"));
-  stop->setToolTip(tr("Stop hand guiding (stopDrag): the arm stops and holds its position"));
+  stop->setToolTip(tr("Stop hand guiding: the arm stops and holds its position"));
   addSendWidget(start);
   addSendWidget(stop);
   buttons->addStretch(1);

@@ -43,7 +43,7 @@ FiltersPanel::FiltersPanel(Session& session, QWidget* parent)
   form->addRow(message_);
   auto* apply = new QPushButton(tr("Apply"), group);
   apply->setObjectName(QStringLiteral("filters.apply"));
-  apply->setToolTip(tr("Send the cut-offs (setFilters)"));
+  apply->setToolTip(tr("Send the cut-off frequencies to the robot"));
   addSendWidget(apply);
   auto* buttons = new QHBoxLayout;
   buttons->addStretch(1);

@@ -23,17 +23,17 @@ ImpedancePanel::ImpedancePanel(Session& session, QWidget* parent)
   const QStringList wrench{"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
   body()->addWidget(makeEditor(joint_, tr("Joint stiffness (joint impedance mode)"), QStringLiteral("impedance.joint"),
                                joints, 0, 20000, {QStringLiteral("Nm/rad")},
-                               tr("Send the joint stiffness (setJointImpedance)")));
+                               tr("Send the joint stiffness to the robot")));
   body()->addWidget(makeEditor(cartesian_, tr("Cartesian stiffness (Cartesian impedance mode)"),
                                QStringLiteral("impedance.cart"), cart, 0, 20000,
                                {QStringLiteral("N/m"), QStringLiteral("N/m"), QStringLiteral("N/m"),
                                 QStringLiteral("Nm/rad"), QStringLiteral("Nm/rad"), QStringLiteral("Nm/rad")},
-                               tr("Send the Cartesian stiffness (setCartesianImpedance)")));
+                               tr("Send the Cartesian stiffness to the robot")));
   body()->addWidget(makeEditor(wrench_, tr("Desired wrench (Cartesian impedance, force-control frame)"),
                                QStringLiteral("impedance.wrench"), wrench, -1000, 1000,
                                {QStringLiteral("N"), QStringLiteral("N"), QStringLiteral("N"), QStringLiteral("Nm"),
                                 QStringLiteral("Nm"), QStringLiteral("Nm")},
-                               tr("Send the wrench the robot applies in Cartesian impedance mode (setCartImpDesiredTau)")));
+                               tr("Send the wrench the robot applies in Cartesian impedance mode")));
   for (int i = 0; i < 7; ++i) joint_.fields[i]->setValue(spec().joint_stiffness_max[i]);
   for (int i = 0; i < 6; ++i) cartesian_.fields[i]->setValue(mc::kCartesianStiffnessMax[i]);
   loadFields(joint_.fields + cartesian_.fields + wrench_.fields);

@@ -30,7 +30,7 @@ IoPanel::IoPanel(Session& session, QWidget* parent) : PanelBase(session, QString
     auto* box = new QCheckBox(name, outs);
     box->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Fixed);  // the whole widget is clickable
     box->setObjectName(QStringLiteral("io.do%1").arg(i));
-    box->setToolTip(tr("Switch output %1 (setDO)").arg(name));
+    box->setToolTip(tr("Switch output %1").arg(name));
     out_grid->addWidget(box, i / 3, i % 3);
     outputs_[i] = box;
     addSendWidget(box);
@@ -40,7 +40,7 @@ IoPanel::IoPanel(Session& session, QWidget* parent) : PanelBase(session, QString
     const QString in_name = QStringLiteral("DI") + QLatin1String(kSignalNames[i]);
     auto* lamp = new Lamp(lampGreen(), ins);
     lamp->setObjectName(QStringLiteral("io.di%1").arg(i));
-    lamp->setToolTip(tr("Level of input %1 (getDI, polled about 5 times a second)").arg(in_name));
+    lamp->setToolTip(tr("Level of input %1 (read about 5 times a second)").arg(in_name));
     auto* cell = new QHBoxLayout;  // lamp and name, in the same columns as the outputs
     cell->addWidget(lamp);
     cell->addWidget(new QLabel(in_name, ins), 1);

@@ -51,7 +51,7 @@ JogPanel::JogPanel(Session& session, QWidget* parent)
     if (ok)
       showStatus(tr("jog %1 done.").arg(label.mid(prefix.size())), false);
     else
-      showStatus(tr("jog %1 failed: %2").arg(label.mid(prefix.size()), message), true);
+      showFailure(tr("jog %1").arg(label.mid(prefix.size())), message);
   });
 }
 

@@ -7,6 +7,7 @@
 
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -58,11 +59,17 @@ void PanelBase::send(const QString& action, std::function<void(xmate::Robot&)> j
   session_.run(label, std::move(job));
 }
 
-void PanelBase::showStatus(const QString& text, bool error) {
+void PanelBase::showStatus(const QString& text, bool error, const QString& detail) {
   if (error)
     status_->showError(text);
   else
     status_->showInfo(text);
+  status_->setToolTip(detail);
+}
+
+void PanelBase::showFailure(const QString& action, const QString& message) {
+  const text::OperatorMessage m = text::failure(message, text::viewOf(session_));
+  showStatus(tr("%1 failed: %2").arg(action, m.line()), true, message);
 }
 
 void PanelBase::addSendWidget(QWidget* widget) {
@@ -122,7 +129,7 @@ void PanelBase::onCommandFinished(const QString& label, bool ok, const QString& 
     showStatus(action + QStringLiteral(": done."), false);
     if (on_success) on_success();
   } else {
-    showStatus(action + QStringLiteral(" failed: ") + message, true);
+    showFailure(action, message);
   }
   commandDone(action, ok, message);
 }

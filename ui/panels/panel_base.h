@@ -45,8 +45,11 @@ class PanelBase : public QWidget {
   // Queues job on the command worker as "<title>: <action>". The status line says it is pending,
   // then done or why it failed; on success on_success runs on the GUI thread.
   void send(const QString& action, std::function<void(xmate::Robot&)> job, std::function<void()> on_success = {});
-  // Shows a line in the status line (errors in red).
-  void showStatus(const QString& text, bool error);
+  // Shows a line in the status line (errors in red); detail, if any, is its tooltip.
+  void showStatus(const QString& text, bool error, const QString& detail = QString());
+  // "<action> failed: <what happened and what to press>" for a failed command's message, in
+  // operator words (text/operator_text.h); the message itself is the tooltip.
+  void showFailure(const QString& action, const QString& message);
   MessageLine* statusLine() const { return status_; }
 
   // Widgets enabled only while a session is open (buttons that send).

@@ -20,15 +20,15 @@ PowerPanel::PowerPanel(Session& session, QWidget* parent)
   auto* grid = new QGridLayout(motors);
   motor_lamp_ = new Lamp(lampGreen(), motors);
   motor_lamp_->setObjectName(QStringLiteral("power.lamp"));
-  motor_lamp_->setToolTip(tr("Motor power as reported by the controller (getMotorState)"));
+  motor_lamp_->setToolTip(tr("Motor power as the controller reports it"));
   motor_text_ = new QLabel(tr("Motors off"), motors);
   motor_text_->setObjectName(QStringLiteral("power.state"));
   auto* on = new QPushButton(tr("Power on"), motors);
   on->setObjectName(QStringLiteral("power.on"));
-  on->setToolTip(tr("Switch the motors on (setMotorPower(1)); refused while an emergency stop is pressed"));
+  on->setToolTip(tr("Switch the motors on; not possible while the emergency stop is pressed"));
   auto* off = new QPushButton(tr("Power off"), motors);
   off->setObjectName(QStringLiteral("power.off"));
-  off->setToolTip(tr("Switch the motors off (setMotorPower(0)); a running motion ends and the brakes hold"));
+  off->setToolTip(tr("Switch the motors off; a running motion ends and the brakes hold"));
   auto* state_row = new QHBoxLayout;
   state_row->addWidget(motor_lamp_);
   state_row->addWidget(motor_text_, 1);

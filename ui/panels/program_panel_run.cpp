@@ -21,6 +21,7 @@
 #include "panels/program_panel.h"
 #include "session/session.h"
 #include "teach/recording.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -156,7 +157,7 @@ void ProgramPanel::runFinished(const QString& label, bool ok, const QString& mes
   if (!ok) {
     run_state_->setText(tr("Failed"));
     progress_->setFormat(tr("Failed"));
-    showStatus(tr("%1 failed: %2").arg(action, message), true);
+    showFailure(action, message);
   } else {
     last_report_ = run_slot_->report;
     showReport(last_report_);
@@ -173,10 +174,13 @@ void ProgramPanel::showReport(const xmate::teach::RunReport& report) {
       progress_->setValue(1000);
       progress_->setFormat(tr("Done"));
       showStatus(tr("%1 finished in %2 s.").arg(what).arg(report.duration, 0, 'f', 1), false);
+      session().reportEvent(Session::EventLevel::kInfo, title() + QStringLiteral(": ") + statusLine()->text());
       break;
     case RunState::kStopped:
       progress_->setFormat(tr("Stopped"));
-      showStatus(tr("%1 stopped%2.").arg(what, message.isEmpty() ? QString() : QStringLiteral(": ") + message), false);
+      showStatus(message.isEmpty() ? tr("%1 stopped.").arg(what) : tr("%1 stopped: %2").arg(what, text::failure(message).line()),
+                 false, message);
+      session().reportEvent(Session::EventLevel::kWarning, title() + QStringLiteral(": ") + statusLine()->text(), message);
       break;
     case RunState::kRefused:
       progress_->setValue(0);
@@ -187,10 +191,12 @@ void ProgramPanel::showReport(const xmate::teach::RunReport& report) {
                      .arg(what) +
                      (report.problems.empty() ? QStringLiteral(" ") + message : QString()),
                  true);
+      session().reportEvent(Session::EventLevel::kWarning, title() + QStringLiteral(": ") + statusLine()->text(), message);
       break;
     default:
       progress_->setFormat(tr("Failed"));
-      showStatus(tr("%1 failed: %2").arg(what, message), true);
+      showFailure(what, message);
+      session().reportEvent(Session::EventLevel::kError, title() + QStringLiteral(": ") + statusLine()->text(), message);
       if (report.failed_instruction >= 0 && !goto_run_) selectRow(int(report.failed_instruction));
       break;
   }
@@ -203,6 +209,8 @@ void ProgramPanel::showProblems(const std::vector<xmate::teach::Problem>& proble
     item->setData(Qt::UserRole, int(p.instruction));
     item->setForeground(QBrush(lampRed()));
   }
+  problems_label_->setVisible(!problems.empty());
+  problems_->setVisible(!problems.empty());
 }
 
 void ProgramPanel::resetRunDisplay() {

@@ -47,7 +47,7 @@ SafetyBoxPanel::SafetyBoxPanel(Session& session, QWidget* parent)
   enabled_ = new QCheckBox(tr("Enabled"), group);
   enabled_->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Fixed);
   enabled_->setObjectName(QStringLiteral("box.enable"));
-  enabled_->setToolTip(tr("Activate the box (setCartesianLimit active = true)"));
+  enabled_->setToolTip(tr("Activate the box: leaving it switches the motors off"));
   grid->addWidget(enabled_, 4, 1);
   message_ = new MessageLine(QStringLiteral("box.message"), group);
   grid->addWidget(message_, 5, 0, 1, 3);
@@ -58,7 +58,7 @@ SafetyBoxPanel::SafetyBoxPanel(Session& session, QWidget* parent)
   from_tcp->setToolTip(tr("Put the centre at the current measured TCP position"));
   auto* apply = new QPushButton(tr("Apply"), group);
   apply->setObjectName(QStringLiteral("box.apply"));
-  apply->setToolTip(tr("Send the box (setCartesianLimit)"));
+  apply->setToolTip(tr("Send the box to the robot"));
   addSendWidget(from_tcp);
   addSendWidget(apply);
   row->addWidget(from_tcp);

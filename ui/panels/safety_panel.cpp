@@ -1,4 +1,6 @@
-// Safety panel: stop states and error bits from the live state, remedies from client/error_bits.
+// Safety panel (safety_panel.h): the live problems in operator words (text/operator_text.h), the
+// Recover button, the stop lamps and the 20 error conditions. Laid out to fit a narrow dock: every
+// text wraps, nothing needs more than about 340 px.
 #include "panels/safety_panel.h"
 
 #include <QGridLayout>
@@ -6,116 +8,178 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QToolButton>
 #include <QVBoxLayout>
 
+#include "client/error_bits.h"
 #include "panels/lamp.h"
 #include "session/session.h"
 
 namespace rci::ui {
 
-using xmate::client::kErrorBitCount;
+namespace {
+
+QLabel* wrapped(const QString& text, QWidget* parent) {
+  auto* label = new QLabel(text, parent);
+  label->setWordWrap(true);
+  return label;
+}
+
+QString bitTip(int bit) {
+  const text::OperatorMessage m = text::errorBit(bit);
+  return QStringLiteral("%1\n%2\n%3 %4\n\n(%5)")
+      .arg(m.title, m.what, QObject::tr("What to do:"), m.todo, m.detail);
+}
+
+}  // namespace
 
 SafetyPanel::SafetyPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("safety"), tr("Safety"), parent) {
-  auto* stops = new QGroupBox(tr("Safety stops"), this);
-  auto* stop_row = new QHBoxLayout(stops);
-  estop_ = new Lamp(lampRed(), stops);
-  estop_->setObjectName(QStringLiteral("safety.estop"));
-  estop_->setToolTip(tr("Emergency stop pressed (getSafetyStopState() = 2): motors off until released"));
-  gstop_ = new Lamp(lampAmber(), stops);
-  gstop_->setObjectName(QStringLiteral("safety.gstop"));
-  gstop_->setToolTip(tr("Guard stop active (getSafetyStopState() = 3): motion stopped until released"));
-  mode_ = new QLabel(stops);
-  mode_->setObjectName(QStringLiteral("safety.mode"));
-  mode_->setToolTip(tr("Robot mode of the newest state"));
-  stop_row->addWidget(estop_);
-  stop_row->addWidget(new QLabel(tr("ESTOP"), stops));
-  stop_row->addSpacing(12);
-  stop_row->addWidget(gstop_);
-  stop_row->addWidget(new QLabel(tr("GSTOP"), stops));
-  stop_row->addStretch(1);
-  stop_row->addWidget(mode_);
-  body()->addWidget(stops);
+  body()->addWidget(makeActive());
+  body()->addWidget(makeStops());
+  body()->addWidget(makeConditions());
+  showAll(loadValue(QStringLiteral("showAll"), false).toBool());
+  sessionClosed();
+}
 
-  auto* bits = new QGroupBox(tr("Error bits"), this);
-  auto* grid = new QGridLayout(bits);
-  grid->setVerticalSpacing(2);
-  for (int i = 0; i < kErrorBitCount; ++i) {
-    auto* lamp = new Lamp(lampRed(), bits);
-    lamp->setObjectName(QStringLiteral("safety.bit%1").arg(i));
-    auto* label = new QLabel(QStringLiteral("%1  %2").arg(i, 2).arg(QLatin1String(xmate::client::errorBitName(i))), bits);
-    label->setObjectName(QStringLiteral("safety.bitname%1").arg(i));
-    const QString tip = QStringLiteral("%1\n\nRemedy: %2")
-                            .arg(QString::fromUtf8(xmate::client::errorBitMeaning(i)),
-                                 QString::fromUtf8(xmate::client::errorBitRemedy(i)));
-    lamp->setToolTip(tip);
-    label->setToolTip(tip);
-    grid->addWidget(lamp, i, 0);
-    grid->addWidget(label, i, 1);
-    bit_lamps_[i] = lamp;
-    bit_labels_[i] = label;
-  }
-  grid->setColumnStretch(1, 1);
-  body()->addWidget(bits);
-
-  auto* active = new QGroupBox(tr("Active errors"), this);
-  auto* active_layout = new QVBoxLayout(active);
-  details_ = new QLabel(active);
+QWidget* SafetyPanel::makeActive() {
+  auto* group = new QGroupBox(tr("What is wrong now"), this);
+  group->setObjectName(QStringLiteral("safety.active"));
+  auto* layout = new QVBoxLayout(group);
+  details_ = new QLabel(group);
   details_->setObjectName(QStringLiteral("safety.details"));
   details_->setWordWrap(true);
   details_->setTextFormat(Qt::RichText);
   details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  active_layout->addWidget(details_);
-  auto* recover = new QPushButton(tr("Recover errors"), active);
-  recover->setObjectName(QStringLiteral("safety.recover"));
-  recover->setToolTip(tr("Clear the error bits (automaticErrorRecovery); power the motors on again afterwards "
-                         "if a collision or the safety box switched them off"));
-  addSendWidget(recover);
-  connect(recover, &QPushButton::clicked, this, [this] {
+  layout->addWidget(details_);
+  recover_ = new QPushButton(tr("Recover"), group);
+  recover_->setObjectName(QStringLiteral("safety.recover"));
+  recover_->setToolTip(tr("Clear the errors the robot reports so it can move again. If a collision or leaving the "
+                          "safety box switched the motors off, press Power on in the Power panel afterwards."));
+  addSendWidget(recover_);
+  connect(recover_, &QPushButton::clicked, this, [this] {
     send(tr("recover errors"), [](xmate::Robot& r) { r.automaticErrorRecovery(); });
   });
   auto* row = new QHBoxLayout;
+  row->addWidget(recover_);
   row->addStretch(1);
-  row->addWidget(recover);
-  active_layout->addLayout(row);
-  body()->addWidget(active);
-  showErrors(0);
+  layout->addLayout(row);
+  return group;
+}
+
+QWidget* SafetyPanel::makeStops() {
+  auto* group = new QGroupBox(tr("Stops"), this);
+  auto* grid = new QGridLayout(group);
+  estop_ = new Lamp(lampRed(), group);
+  estop_->setObjectName(QStringLiteral("safety.estop"));
+  estop_->setToolTip(tr("On while the emergency stop is pressed: the motors stay off until it is released"));
+  gstop_ = new Lamp(lampAmber(), group);
+  gstop_->setObjectName(QStringLiteral("safety.gstop"));
+  gstop_->setToolTip(tr("On while the guard stop is active (safety door open): no motion until it is closed"));
+  mode_ = wrapped(QString(), group);
+  mode_->setObjectName(QStringLiteral("safety.mode"));
+  mode_->setToolTip(tr("What the robot is doing, as its controller reports it"));
+  grid->addWidget(estop_, 0, 0);
+  grid->addWidget(wrapped(tr("Emergency stop"), group), 0, 1);
+  grid->addWidget(gstop_, 1, 0);
+  grid->addWidget(wrapped(tr("Guard stop (safety door)"), group), 1, 1);
+  grid->addWidget(mode_, 2, 0, 1, 2);
+  grid->setColumnStretch(1, 1);
+  return group;
+}
+
+QWidget* SafetyPanel::makeConditions() {
+  auto* group = new QGroupBox(tr("All error conditions"), this);
+  auto* layout = new QVBoxLayout(group);
+  show_all_ = new QToolButton(group);
+  show_all_->setObjectName(QStringLiteral("safety.showAll"));
+  show_all_->setCheckable(true);
+  show_all_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  show_all_->setToolTip(tr("Show or hide the list of everything the robot can report; active ones are red"));
+  connect(show_all_, &QToolButton::toggled, this, [this](bool on) {
+    showAll(on);
+    saveValue(QStringLiteral("showAll"), on);
+  });
+  layout->addWidget(show_all_);
+  conditions_ = new QWidget(group);
+  auto* grid = new QGridLayout(conditions_);
+  grid->setContentsMargins(0, 0, 0, 0);
+  grid->setVerticalSpacing(2);
+  for (int i = 0; i < text::kErrorBitCount; ++i) {
+    auto* lamp = new Lamp(lampRed(), conditions_);
+    lamp->setObjectName(QStringLiteral("safety.bit%1").arg(i));
+    auto* label = wrapped(text::errorBitTitle(i), conditions_);
+    label->setObjectName(QStringLiteral("safety.bitname%1").arg(i));
+    const QString tip = bitTip(i);
+    lamp->setToolTip(tip);
+    label->setToolTip(tip);
+    grid->addWidget(lamp, i, 0, Qt::AlignTop);
+    grid->addWidget(label, i, 1);
+    bit_lamps_[size_t(i)] = lamp;
+    bit_labels_[size_t(i)] = label;
+  }
+  grid->setColumnStretch(1, 1);
+  layout->addWidget(conditions_);
+  return group;
+}
+
+void SafetyPanel::showAll(bool shown) {
+  show_all_->setChecked(shown);
+  show_all_->setArrowType(shown ? Qt::DownArrow : Qt::RightArrow);
+  show_all_->setText(shown ? tr("Hide the list") : tr("Show all %1").arg(text::kErrorBitCount));
+  conditions_->setVisible(shown);
 }
 
 void SafetyPanel::refresh(const LiveState& live) {
   estop_->setOn(live.safety_stop == 2);
   gstop_->setOn(live.safety_stop == 3);
   if (!live.has_state) return;
-  mode_->setText(tr("Mode: %1").arg(QLatin1String(xmate::client::robotModeName(live.state.robot_mode))));
-  showErrors(xmate::client::errorMask(live.state.errors));
+  mode_->setText(tr("Robot: %1").arg(text::robotMode(live.state.robot_mode)));
+  showBits(xmate::client::errorMask(live.state.errors));
+  showProblems();
 }
 
 void SafetyPanel::sessionClosed() {
   estop_->setOn(false);
   gstop_->setOn(false);
   mode_->setText(tr("Not connected"));
-  showErrors(0);
+  showBits(0);
+  shown_details_.clear();
+  details_->setText(tr("Not connected."));
+  details_->setToolTip(QString());
 }
 
-void SafetyPanel::showErrors(uint32_t mask) {
+// Active errors first, each with what happened and what to do; unchanged text is not set again.
+void SafetyPanel::showProblems() {
+  const std::vector<text::OperatorMessage> problems = text::activeProblems(text::viewOf(session()));
+  QStringList paragraphs, details;
+  for (const text::OperatorMessage& m : problems) {
+    paragraphs << QStringLiteral("<p style=\"color:#b02020\">%1</p>").arg(m.html());
+    if (!m.detail.isEmpty()) details << m.detail;
+  }
+  const QString html = paragraphs.isEmpty() ? tr("No errors.") : paragraphs.join(QString());
+  if (recover_->font().bold() != !problems.empty()) {
+    QFont font = recover_->font();
+    font.setBold(!problems.empty());
+    recover_->setFont(font);
+  }
+  if (html == shown_details_) return;
+  shown_details_ = html;
+  details_->setText(html);
+  details_->setToolTip(details.isEmpty() ? QString() : tr("As the controller names them: %1").arg(details.join(QStringLiteral(", "))));
+}
+
+void SafetyPanel::showBits(uint32_t mask) {
   if (mask == shown_mask_) return;
   shown_mask_ = mask;
-  QString html;
-  for (int i = 0; i < kErrorBitCount; ++i) {
+  for (int i = 0; i < text::kErrorBitCount; ++i) {
     const bool on = (mask >> i) & 1u;
-    bit_lamps_[i]->setOn(on);
-    QFont font = bit_labels_[i]->font();
+    bit_lamps_[size_t(i)]->setOn(on);
+    QFont font = bit_labels_[size_t(i)]->font();
     font.setBold(on);
-    bit_labels_[i]->setFont(font);
-    bit_labels_[i]->setStyleSheet(on ? QStringLiteral("color: #b02020;") : QString());
-    if (!on) continue;
-    html += QStringLiteral("<p><b>%1 %2</b>: %3.<br/><i>Remedy:</i> %4.</p>")
-                .arg(i)
-                .arg(QLatin1String(xmate::client::errorBitName(i)),
-                     QString::fromUtf8(xmate::client::errorBitMeaning(i)).toHtmlEscaped(),
-                     QString::fromUtf8(xmate::client::errorBitRemedy(i)).toHtmlEscaped());
+    bit_labels_[size_t(i)]->setFont(font);
+    bit_labels_[size_t(i)]->setStyleSheet(on ? QStringLiteral("color: #b02020;") : QString());
   }
-  details_->setText(html.isEmpty() ? tr("No errors.") : html);
 }
 
 }  // namespace rci::ui

@@ -13,6 +13,7 @@
 
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -128,8 +129,14 @@ void SimulatorPanel::scene(const QString& what, const std::function<void(xmate::
   try {
     call(*sim);
     message_->showInfo(tr("%1.").arg(what.left(1).toUpper() + what.mid(1)));
+    message_->setToolTip(QString());
+    session().reportEvent(Session::EventLevel::kInfo, tr("%1: %2").arg(title(), what));
   } catch (const std::exception& e) {
-    message_->showError(tr("%1 failed: %2").arg(what, QString::fromUtf8(e.what())));
+    const text::OperatorMessage m = text::failure(e, text::viewOf(session()));
+    message_->showError(tr("%1 failed: %2").arg(what, m.line()));
+    message_->setToolTip(QString::fromUtf8(e.what()));
+    session().reportEvent(Session::EventLevel::kError, tr("%1: %2 failed: %3").arg(title(), what, m.line()),
+                          QString::fromUtf8(e.what()));
   }
 }
 

@@ -67,7 +67,7 @@ QGroupBox* ToolPanel::makeToolGroup() {
   grid->addWidget(tool_message_, 3, 0, 1, 4);
   auto* apply = new QPushButton(tr("Apply"), group);
   apply->setObjectName(QStringLiteral("tool.apply"));
-  apply->setToolTip(tr("Send the TCP frame (setCoor); the controller forgets it on reboot"));
+  apply->setToolTip(tr("Send the TCP frame to the robot; it forgets it when the controller restarts"));
   addSendWidget(apply);
   connect(apply, &QPushButton::clicked, this, &ToolPanel::applyTool);
   auto* row = new QHBoxLayout;
@@ -113,7 +113,7 @@ QGroupBox* ToolPanel::makePayloadGroup() {
   grid->addWidget(payload_message_, 4, 0, 1, 6);
   auto* apply = new QPushButton(tr("Apply"), group);
   apply->setObjectName(QStringLiteral("payload.apply"));
-  apply->setToolTip(tr("Send the payload (setLoad); a wrong payload shows up as external torque"));
+  apply->setToolTip(tr("Send the payload to the robot; a wrong payload shows up as external torque"));
   addSendWidget(apply);
   connect(apply, &QPushButton::clicked, this, &ToolPanel::applyPayload);
   auto* row = new QHBoxLayout;

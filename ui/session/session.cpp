@@ -332,6 +332,7 @@ void Session::run(const QString& label, std::function<void(xmate::Robot&)> job) 
   }
   xmate::Robot* robot = impl_->link->robot.get();
   const uint64_t my_generation = impl_->generation;
+  emit commandStarted(label);
   // Hand-off: the command worker's job queue (JobWorker::post, mutex + condition variable).
   impl_->link->commands->post([this, robot, my_generation, label, job = std::move(job)] {
     const auto [ok, message] = runCatching(job, *robot);
@@ -375,6 +376,10 @@ void Session::runMotion(const QString& label, std::function<void(xmate::Robot&)>
         },
         Qt::QueuedConnection);
   });
+}
+
+void Session::reportEvent(EventLevel level, const QString& text, const QString& detail) {
+  emit eventReported(level, text, detail);
 }
 
 void Session::requestStop() {

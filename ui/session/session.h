@@ -82,6 +82,10 @@ struct ProgramOverlay {
 class Session : public QObject {
   Q_OBJECT
  public:
+  // How much an event reported for the log (reportEvent) matters.
+  enum class EventLevel { kInfo, kWarning, kError };
+  Q_ENUM(EventLevel)
+
   explicit Session(QObject* parent = nullptr);
   ~Session() override;  // close()s
 
@@ -124,6 +128,10 @@ class Session : public QObject {
   // shows it on a real robot (the simulator reports its outputs itself). GUI thread only.
   void recordDigitalOutput(int index, bool on);
 
+  // Addition: a panel tells the event log what happened in operator words (e.g. the outcome of a
+  // program run); emits eventReported(). detail: the programmer's words, for a tooltip. GUI thread.
+  void reportEvent(EventLevel level, const QString& text, const QString& detail = QString());
+
   void requestStop();                 // sets stopRequested() until the running motion ends
   bool stopRequested() const;         // any thread
 
@@ -140,11 +148,15 @@ class Session : public QObject {
   // Display rate, before tick(): the samples the real-time thread recorded since the last batch,
   // oldest first. The pointer is valid only during the call (connect directly, GUI thread).
   void samplesArrived(const xmate::client::StateSample* samples, int count);
+  // Addition: run() queued the job labelled label (commandFinished follows).
+  void commandStarted(const QString& label);
   void commandFinished(const QString& label, bool ok, const QString& message);
   void operatorSettingsChanged();
   void programOverlayChanged();
   void motionStarted(const QString& label);
   void motionFinished(const QString& label, bool ok, const QString& message);
+  // Addition: see reportEvent().
+  void eventReported(rci::ui::Session::EventLevel level, const QString& text, const QString& detail);
 
  private:
   struct Impl;

@@ -5,8 +5,8 @@
 #include <QLabel>
 #include <QStatusBar>
 
-#include "client/error_bits.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 namespace {
@@ -22,32 +22,21 @@ void setField(QLabel* label, const QString& text, const char* style) {
   if (label->styleSheet() != sheet) label->setStyleSheet(sheet);
 }
 
-QStringList activeErrorNames(const RCI::robot::RobotState& state) {
-  QStringList names;
-  for (int bit = 0; bit < xmate::client::kErrorBitCount; ++bit)
-    if (state.errors[size_t(bit)]) names << QString::fromLatin1(xmate::client::errorBitName(bit));
-  return names;
+// The active error bits by their plain titles; the enum names for the tooltip.
+QStringList activeErrorTitles(const RCI::robot::RobotState& state) {
+  QStringList titles;
+  for (int bit = 0; bit < text::kErrorBitCount; ++bit)
+    if (state.errors[size_t(bit)]) titles << text::errorBitTitle(bit);
+  return titles;
 }
 
 }  // namespace
 
-QString robotModeText(RCI::robot::RobotMode mode) {
-  using RCI::robot::RobotMode;
-  switch (mode) {
-    case RobotMode::kIdle: return QObject::tr("Idle");
-    case RobotMode::kMove: return QObject::tr("Moving");
-    case RobotMode::kGuiding: return QObject::tr("Hand guiding");
-    case RobotMode::kReflex: return QObject::tr("Reflex (stopped on error)");
-    case RobotMode::kUserStopped: return QObject::tr("User stopped");
-    case RobotMode::kAutomaticErrorRecovery: return QObject::tr("Error recovery");
-    case RobotMode::kOther: break;
-  }
-  return QObject::tr("Other");
-}
+QString robotModeText(RCI::robot::RobotMode mode) { return text::robotMode(mode); }
 
 StatusStrip::StatusStrip(Session& session, QStatusBar* bar) : QObject(bar), session_(session), bar_(bar) {
   target_ = field("status.target", tr("What this window is connected to"));
-  mode_ = field("status.mode", tr("The controller's robot mode (RobotState::robot_mode)"));
+  mode_ = field("status.mode", tr("What the robot is doing, as its controller reports it"));
   motors_ = field("status.motors", tr("Motor power as reported by the controller"));
   realtime_ = field("status.realtime", QString());
   rate_ = field("status.rate", tr("States received per second (nominal 1000 Hz)"));
@@ -129,15 +118,29 @@ void StatusStrip::refreshOpen() {
     setField(success_, tr("Commands –"), kNormal);
   }
 
-  const QStringList errors = activeErrorNames(state);
+  const QStringList errors = activeErrorTitles(state);
   errors_->setVisible(!errors.isEmpty() || live.safety_stop != 1);
   errorsRule()->setVisible(errors_->isVisibleTo(bar_));
-  QString text;
-  if (live.safety_stop == 2) text = tr("EMERGENCY STOP");
-  if (live.safety_stop == 3) text = tr("GUARD STOP");
-  if (!errors.isEmpty()) text += (text.isEmpty() ? QString() : QStringLiteral("  ")) + tr("Errors: %1").arg(errors.join(", "));
-  setField(errors_, text, kBad);
-  errors_->setToolTip(QString::fromStdString(xmate::client::describeErrors(state.errors)));
+  QString shown;
+  if (live.safety_stop == 2) shown = tr("EMERGENCY STOP");
+  if (live.safety_stop == 3) shown = tr("GUARD STOP");
+  if (!errors.isEmpty()) shown += (shown.isEmpty() ? QString() : QStringLiteral("  ")) + tr("Errors: %1").arg(errors.join(", "));
+  setField(errors_, shown, kBad);
+  errors_->setToolTip(errors_->isVisibleTo(bar_) ? problemsTip() : QString());
+}
+
+// Every active problem in operator words, what to do, and the enum names as the detail.
+QString StatusStrip::problemsTip() const {
+  QStringList lines;
+  QStringList details;
+  for (const text::OperatorMessage& m : text::activeProblems(text::viewOf(session_))) {
+    lines << m.line();
+    if (!m.detail.isEmpty()) details << m.detail;
+  }
+  if (lines.isEmpty()) return QString();
+  QString tip = lines.join(QStringLiteral("\n\n")) + tr("\n\nThe Safety panel shows the same, with Recover.");
+  if (!details.isEmpty()) tip += QStringLiteral("\n\n(%1)").arg(details.join(QStringLiteral(", ")));
+  return tip;
 }
 
 }  // namespace rci::ui

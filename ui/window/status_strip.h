@@ -30,6 +30,7 @@ class StatusStrip : public QObject {
   void refreshOpen();
   void refreshClosed();
   QFrame* errorsRule() const;
+  QString problemsTip() const;
 
   Session& session_;
   QStatusBar* bar_;
