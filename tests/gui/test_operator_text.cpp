@@ -70,6 +70,7 @@ class TestOperatorText : public QObject {
   void programFailureKeepsTheInstruction();
   void exceptionTypesTranslate();
   void unknownFailureKeepsTheRawMessage();
+  void refusedValuesNameTheField();
 };
 
 void TestOperatorText::everyErrorBitHasPlainText() {
@@ -329,6 +330,30 @@ void TestOperatorText::unknownFailureKeepsTheRawMessage() {
   QVERIFY(m.detail_inline);
   QVERIFY2(m.line().startsWith(QStringLiteral("The command did not succeed.")), qPrintable(m.line()));
   QVERIFY2(m.line().endsWith(QStringLiteral("(frobnicate: the flux capacitor is cold)")), qPrintable(m.line()));
+}
+
+// The editors' refusals name the field the operator typed into, not the call's parameter.
+void TestOperatorText::refusedValuesNameTheField() {
+  const struct {
+    const char* raw;
+    const char* plain;
+  } cases[] = {
+      {"setCollisionBehavior: upper_torque_thresholds_nominal[2] = 90 is outside (0, 60] Nm",
+       "J3 threshold = 90 is outside (0, 60] Nm"},
+      {"setJointLimit: lower[1] = 100 must be below upper[1] = 50", "J2 lower limit = 100 must be below J2 upper limit = 50"},
+      {"setFilters: torque_hz = 2000 is outside [1, 1000] Hz (10-100 Hz recommended)",
+       "Torque filter = 2000 is outside [1, 1000] Hz (10-100 Hz recommended)"},
+      {"setLoad: inertia must be symmetric (row-major 3x3 about the centre of mass, kg m^2)",
+       "Inertia must be symmetric (row-major 3x3 about the centre of mass, kg m^2)"},
+      {"setCartImpDesiredTau: tau[2] = 80 is outside [-60, 60] N", "Desired wrench Fz = 80 is outside [-60, 60] N"},
+      {"setCoor: the TCP is 0.8 m from the flange; at most 0.5 m is accepted",
+       "The TCP is 0.8 m from the flange; at most 0.5 m is accepted"},
+  };
+  for (const auto& c : cases) {
+    const QString plain = valueRefusal(c.raw);
+    QCOMPARE(plain, QString::fromUtf8(c.plain));
+    QVERIFY2(programmerWordsIn(plain).isEmpty(), qPrintable(plain));
+  }
 }
 
 QTEST_GUILESS_MAIN(TestOperatorText)

@@ -190,7 +190,7 @@ void TestPanels::invalidThresholdRefusedAndNothingSent() {
   click(QStringLiteral("collision.apply"));
   auto* message = find<MessageLine>(QStringLiteral("collision.message"));
   QCOMPARE(message->kind(), QStringLiteral("error"));
-  QVERIFY2(message->text().contains(QStringLiteral("upper_torque_thresholds_nominal[2]")), qPrintable(message->text()));
+  QVERIFY2(message->text().contains(QStringLiteral("J3 threshold = 90")), qPrintable(message->text()));
   QVERIFY(message->text().contains(QStringLiteral("60")));
   QVERIFY(find<QDoubleSpinBox>(QStringLiteral("collision.threshold3"))->property("invalid").toBool());
   // Commands run in order: once a later command finished, a sent threshold would have finished too.
@@ -207,7 +207,7 @@ void TestPanels::filtersRefuseAndWarn() {
   setField(QStringLiteral("filters.torque"), 2000);  // above 1000 Hz: refused
   click(QStringLiteral("filters.apply"));
   QCOMPARE(message->kind(), QStringLiteral("error"));
-  QVERIFY2(message->text().contains(QStringLiteral("torque_hz")), qPrintable(message->text()));
+  QVERIFY2(message->text().contains(QStringLiteral("Torque filter = 2000")), qPrintable(message->text()));
   QVERIFY(find<QDoubleSpinBox>(QStringLiteral("filters.torque"))->property("invalid").toBool());
   QCOMPARE(sent.count(), 0);
 
@@ -242,12 +242,13 @@ void TestPanels::softLimitsRefuseAndApply() {
   setField(QStringLiteral("limits.upper2"), 50);
   click(QStringLiteral("limits.apply"));
   QCOMPARE(message->kind(), QStringLiteral("error"));
-  QVERIFY2(message->text().contains(QStringLiteral("lower[1]")), qPrintable(message->text()));
+  QVERIFY2(message->text().contains(QStringLiteral("J2 lower limit = 100 must be below J2 upper limit = 50")),
+           qPrintable(message->text()));
   setField(QStringLiteral("limits.upper1"), 200);  // beyond the 170 deg hardware limit
   setField(QStringLiteral("limits.lower2"), -100);
   setField(QStringLiteral("limits.upper2"), 100);
   click(QStringLiteral("limits.apply"));
-  QVERIFY2(message->text().contains(QStringLiteral("upper[0]")), qPrintable(message->text()));
+  QVERIFY2(message->text().contains(QStringLiteral("J1 upper limit = 200")), qPrintable(message->text()));
   QVERIFY(find<QDoubleSpinBox>(QStringLiteral("limits.upper1"))->property("invalid").toBool());
 
   setField(QStringLiteral("limits.upper1"), 150);
@@ -483,7 +484,7 @@ void TestPanels::sixAxisModelHidesSeventhJoint() {
   // The 6-axis maxima apply: J4 of the xMate7 allows 30 Nm.
   setField(QStringLiteral("collision.threshold4"), 40);
   click(QStringLiteral("collision.apply"));
-  QVERIFY2(find<QLabel>(QStringLiteral("collision.message"))->text().contains(QStringLiteral("[3] = 40")),
+  QVERIFY2(find<QLabel>(QStringLiteral("collision.message"))->text().contains(QStringLiteral("J4 threshold = 40")),
            qPrintable(find<QLabel>(QStringLiteral("collision.message"))->text()));
   session_->close();
 }

@@ -15,6 +15,7 @@
 #include "model/parameter_checks.h"
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -92,7 +93,7 @@ void CollisionPanel::apply() {
     const int i = indexInMessage(error, "upper_torque_thresholds_nominal");
     if (i >= 0 && i < fields_.size()) markInvalid(fields_[i], true);
     message_->showError(tr("Not sent: %1. Enter a value within the range shown in the field's tooltip.")
-                            .arg(QString::fromStdString(error)));
+                            .arg(text::valueRefusal(error)));
     return;
   }
   message_->clearMessage();

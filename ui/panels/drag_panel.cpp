@@ -12,6 +12,7 @@
 #include "panels/fields.h"
 #include "panels/lamp.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -83,7 +84,7 @@ void DragPanel::start() {
   const int type = type_->currentData().toInt();
   const std::string error = xmate::model::checkDrag(space, type);
   if (!error.empty()) {
-    message_->showError(tr("Not sent: %1.").arg(QString::fromStdString(error)));
+    message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }
   message_->clearMessage();

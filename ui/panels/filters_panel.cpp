@@ -10,6 +10,7 @@
 #include "model/parameter_checks.h"
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -79,7 +80,7 @@ void FiltersPanel::apply() {
     const char* params[3] = {"joint_hz", "cartesian_hz", "torque_hz"};
     for (int i = 0; i < 3; ++i)
       if (error.find(std::string("setFilters: ") + params[i]) != std::string::npos) markInvalid(fields_[i], true);
-    message_->showError(tr("Not sent: %1.").arg(QString::fromStdString(error)));
+    message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }
   const QString warning = recommendationWarning();

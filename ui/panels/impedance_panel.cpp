@@ -11,6 +11,7 @@
 #include "model/parameter_checks.h"
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -104,7 +105,7 @@ bool ImpedancePanel::accept(Editor& editor, const std::string& error, const char
   }
   const int i = indexInMessage(error, parameter);
   if (i >= 0 && i < editor.fields.size()) markInvalid(editor.fields[i], true);
-  editor.message->showError(tr("Not sent: %1.").arg(QString::fromStdString(error)));
+  editor.message->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
   return false;
 }
 

@@ -12,6 +12,7 @@
 #include "model/parameter_checks.h"
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -96,7 +97,7 @@ void SafetyBoxPanel::apply() {
   if (!error.empty()) {
     const int i = indexInMessage(error, "size");
     if (i >= 0 && i < 3) markInvalid(size_[i], true);
-    message_->showError(tr("Not sent: %1.").arg(QString::fromStdString(error)));
+    message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }
   message_->clearMessage();

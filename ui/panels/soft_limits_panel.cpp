@@ -15,6 +15,7 @@
 #include "model/parameter_checks.h"
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -119,7 +120,7 @@ void SoftLimitsPanel::apply() {
     const int low = indexInMessage(error, "lower");
     if (up >= 0 && up < 7) markInvalid(upper_[up], true);
     if (low >= 0 && low < 7) markInvalid(lower_[low], true);
-    message_->showError(tr("Not sent: %1.").arg(QString::fromStdString(error)));
+    message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }
   message_->clearMessage();

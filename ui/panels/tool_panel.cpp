@@ -13,6 +13,7 @@
 #include "model/parameter_checks.h"
 #include "panels/fields.h"
 #include "session/session.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -131,7 +132,7 @@ void ToolPanel::applyTool() {
   const std::string error = mc::checkToolFrame(frame);
   if (!error.empty()) {
     for (int i = 0; i < 3; ++i) markInvalid(tool_[i], true);
-    tool_message_->showError(tr("Not sent: %1.").arg(QString::fromStdString(error)));
+    tool_message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }
   tool_message_->clearMessage();
@@ -153,7 +154,7 @@ void ToolPanel::applyPayload() {
     if (c >= 0 && c < 3) markInvalid(centre_[c], true);
     if (error.find("inertia") != std::string::npos)
       for (auto* f : inertia_) markInvalid(f, true);
-    payload_message_->showError(tr("Not sent: %1.").arg(QString::fromStdString(error)));
+    payload_message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }
   payload_message_->clearMessage();

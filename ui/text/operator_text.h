@@ -9,6 +9,7 @@
 #include <array>
 #include <exception>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <xmate/rci_types.h>
@@ -111,6 +112,10 @@ OperatorMessage errorBit(int bit, const RobotView& view);
 OperatorMessage failure(const QString& raw, const RobotView& view = {});
 // The same, using the exception's type too.
 OperatorMessage failure(const std::exception& error, const RobotView& view = {});
+
+// A value an editor refuses before sending (core/src/model/parameter_checks.h), with the fields'
+// names instead of the parameters': "J3 threshold = 90 is outside (0, 60] Nm".
+QString valueRefusal(const std::string& raw);
 
 }  // namespace text
 }  // namespace rci::ui
