@@ -71,6 +71,7 @@ class TestOperatorText : public QObject {
   void exceptionTypesTranslate();
   void unknownFailureKeepsTheRawMessage();
   void refusedValuesNameTheField();
+  void programProblemsWithoutSolverCodes();
 };
 
 void TestOperatorText::everyErrorBitHasPlainText() {
@@ -354,6 +355,14 @@ void TestOperatorText::refusedValuesNameTheField() {
     QCOMPARE(plain, QString::fromUtf8(c.plain));
     QVERIFY2(programmerWordsIn(plain).isEmpty(), qPrintable(plain));
   }
+}
+
+void TestOperatorText::programProblemsWithoutSolverCodes() {
+  const QString plain = programProblem(
+      "instruction 2 (MOVEL \"far\"): the target pose cannot be reached: the pose is beyond the arm's reach (IK code "
+      "1); re-teach it, or give the target's joint angles \"q\"");
+  QCOMPARE(plain, QStringLiteral("instruction 2 (MOVEL \"far\"): the target pose cannot be reached: the pose is beyond "
+                                 "the arm's reach; re-teach it (Touch up in the Program panel)"));
 }
 
 QTEST_GUILESS_MAIN(TestOperatorText)

@@ -205,7 +205,8 @@ void ProgramPanel::showReport(const xmate::teach::RunReport& report) {
 void ProgramPanel::showProblems(const std::vector<xmate::teach::Problem>& problems) {
   problems_->clear();
   for (const auto& p : problems) {
-    auto* item = new QListWidgetItem(QString::fromStdString(p.message), problems_);
+    auto* item = new QListWidgetItem(text::programProblem(p.message), problems_);
+    item->setToolTip(QString::fromStdString(p.message));
     item->setData(Qt::UserRole, int(p.instruction));
     item->setForeground(QBrush(lampRed()));
   }

@@ -117,5 +117,9 @@ OperatorMessage failure(const std::exception& error, const RobotView& view = {})
 // names instead of the parameters': "J3 threshold = 90 is outside (0, 60] Nm".
 QString valueRefusal(const std::string& raw);
 
+// A pre-flight problem of a program ("instruction 2 (MOVEL): the path cannot be followed ..."),
+// without the solver's codes and with the button that re-teaches.
+QString programProblem(const std::string& raw);
+
 }  // namespace text
 }  // namespace rci::ui

@@ -1,0 +1,27 @@
+// Operator text for the pre-flight problems of a program (operator_text.h): the checker's sentences
+// are plain already; the window drops the solver's codes and says which button does the re-teach.
+#include <QCoreApplication>
+#include <QRegularExpression>
+
+#include "text/operator_text.h"
+
+namespace rci::ui::text {
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("OperatorText", text); }
+
+}  // namespace
+
+QString programProblem(const std::string& raw) {
+  QString plain = QString::fromStdString(raw).trimmed();
+  static const QRegularExpression code(QStringLiteral(R"( \(IK code -?\d+\))"));
+  plain.remove(code);
+  plain.replace(QStringLiteral("re-teach it, or give the target's joint angles \"q\""),
+                tr("re-teach it (Touch up in the Program panel)"));
+  plain.replace(QStringLiteral("re-teach the target or reach it with MOVEJ"),
+                tr("re-teach the target (Touch up) or make it a joint move (type J)"));
+  plain.replace(QStringLiteral("re-teach the waypoint"), tr("re-teach the waypoint (Touch up)"));
+  return plain;
+}
+
+}  // namespace rci::ui::text
