@@ -15,7 +15,11 @@ struct Run {
 };
 
 Run runStudio(const QStringList& arguments, int limit_ms = 120000) {
+  static QTemporaryDir state;  // the event log of these runs goes here, not to the user's state folder
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.insert(QStringLiteral("XDG_STATE_HOME"), state.path());
   QProcess process;
+  process.setProcessEnvironment(environment);
   process.start(QStringLiteral(RCI_STUDIO_PATH), arguments);
   Run run;
   if (!process.waitForFinished(limit_ms)) {
