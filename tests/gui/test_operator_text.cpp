@@ -72,6 +72,7 @@ class TestOperatorText : public QObject {
   void unknownFailureKeepsTheRawMessage();
   void refusedValuesNameTheField();
   void programProblemsWithoutSolverCodes();
+  void connectFailureNamesTheTarget();
 };
 
 void TestOperatorText::everyErrorBitHasPlainText() {
@@ -363,6 +364,17 @@ void TestOperatorText::programProblemsWithoutSolverCodes() {
       "1); re-teach it, or give the target's joint angles \"q\"");
   QCOMPARE(plain, QStringLiteral("instruction 2 (MOVEL \"far\"): the target pose cannot be reached: the pose is beyond "
                                  "the arm's reach; re-teach it (Touch up in the Program panel)"));
+}
+
+void TestOperatorText::connectFailureNamesTheTarget() {
+  const QString refused = connectFailure(
+      QStringLiteral("Robot 10.0.0.2:1337 (xMate7 Pro)"),
+      QStringLiteral("connect: connection refused; check the controller's IP address and port and that it is in RCI mode"));
+  QVERIFY2(refused.startsWith(QStringLiteral("Could not connect to Robot 10.0.0.2:1337 (xMate7 Pro): Cannot reach the robot.")),
+           qPrintable(refused));
+  // Not recognised: the reason as it is.
+  QCOMPARE(connectFailure(QStringLiteral("Simulator (xMate7 Pro)"), QStringLiteral("port 1337 is in use")),
+           QStringLiteral("Could not connect to Simulator (xMate7 Pro): port 1337 is in use"));
 }
 
 QTEST_GUILESS_MAIN(TestOperatorText)

@@ -341,4 +341,9 @@ OperatorMessage failure(const std::exception& error, const RobotView& view) {
   return failure(raw, view);
 }
 
+QString connectFailure(const QString& target, const QString& reason) {
+  const OperatorMessage m = failure(reason);
+  return tr("Could not connect to %1: %2").arg(target, m.detail_inline ? reason : m.line());
+}
+
 }  // namespace rci::ui::text

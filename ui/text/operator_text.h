@@ -113,6 +113,10 @@ OperatorMessage failure(const QString& raw, const RobotView& view = {});
 // The same, using the exception's type too.
 OperatorMessage failure(const std::exception& error, const RobotView& view = {});
 
+// "Could not connect to Robot 10.0.0.2:1337 (xMate7 Pro): Cannot reach the robot. Check ..." for
+// a failed open (the reason itself when it is not recognised).
+QString connectFailure(const QString& target, const QString& reason);
+
 // A value an editor refuses before sending (core/src/model/parameter_checks.h), with the fields'
 // names instead of the parameters': "J3 threshold = 90 is outside (0, 60] Nm".
 QString valueRefusal(const std::string& raw);

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <map>
 
+#include "text/operator_text.h"
 #include "window/banner.h"
 #include "window/connection_bar.h"
 #include "window/message_log.h"
@@ -242,7 +243,7 @@ void MainWindow::connectSession() {
   });
   connect(&session_, &Session::openFailed, this, [this](const QString& reason) {
     bar_->setState(ConnectionBar::State::kDisconnected);
-    banner_->showError(reason);
+    banner_->showError(text::connectFailure(session_.target().describe(), reason));
     strip_->refresh();
     updateTitle();
   });

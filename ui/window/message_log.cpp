@@ -154,8 +154,7 @@ MessageLog::~MessageLog() { flushRepeats(true); }
 void MessageLog::connectSession(Session& session) {
   connect(&session, &Session::opened, this, [this, &session] { addInfo(tr("Connected to %1").arg(session.target().describe())); });
   connect(&session, &Session::openFailed, this, [this, &session](const QString& reason) {
-    const text::OperatorMessage m = text::failure(reason);
-    addError(tr("Could not connect to %1: %2").arg(session.target().describe(), m.line()), reason);
+    addError(text::connectFailure(session.target().describe(), reason), reason);
   });
   connect(&session, &Session::closed, this, [this](const QString& reason) {
     if (reason.isEmpty()) addInfo(tr("Disconnected"));
