@@ -232,8 +232,8 @@ void TestEventLog::sessionEventsAreLogged() {
   // A hard push on the held arm: a collision, the motors switch off.
   QTRY_VERIFY_WITH_TIMEOUT(session_->live().state.robot_mode == RCI::robot::RobotMode::kIdle, kWaitMs);
   session_->simulator()->setExternalWrench({250, 0, 0, 0, 0, 0});
-  QTRY_VERIFY_WITH_TIMEOUT(log_->find(QStringLiteral("Error: Collision detected")) >= 0, kWaitMs);
-  const int collision = log_->find(QStringLiteral("Error: Collision detected"));
+  QTRY_VERIFY_WITH_TIMEOUT(log_->find(QStringLiteral("Robot reports: Collision detected")) >= 0, kWaitMs);
+  const int collision = log_->find(QStringLiteral("Robot reports: Collision detected"));
   QCOMPARE(log_->level(collision), MessageLog::Level::kError);
   QVERIFY2(log_->text(collision).contains(QStringLiteral("press Recover in the Safety panel")), qPrintable(log_->text(collision)));
   QTRY_VERIFY_WITH_TIMEOUT(log_->find(QStringLiteral("Motors off")) >= 0, kWaitMs);
@@ -254,7 +254,7 @@ void TestEventLog::sessionEventsAreLogged() {
   log_->flushLogFile();
   const QString text = readAll(log_->logFilePath());
   for (const char* event : {"Connected to Simulator", "Power: power on — done", "Motors on", "Hand guiding started",
-                            "Hand guiding stopped", "ERROR  Error: Collision detected", "Motors off",
+                            "Hand guiding stopped", "ERROR  Robot reports: Collision detected", "Motors off",
                             "Safety: recover errors — done", "Errors cleared: ",
                             "The motors are off. Press Power on"})
     QVERIFY2(text.contains(QString::fromUtf8(event)), event);

@@ -142,9 +142,10 @@ MessageLog::MessageLog(Session& session, QWidget* parent, const QString& log_fol
     file_label_->setText(tr("Log file: %1").arg(file_->path()));
     file_label_->setToolTip(tr("Every message is also written to %1 (rotated at 1 MB, three old files kept)")
                                 .arg(file_->path()));
-    file_->append(QStringLiteral("%1  INFO   ---- RCI Studio %2 started ----")
+    const QString version = QCoreApplication::applicationVersion();
+    file_->append(QStringLiteral("%1  INFO   ---- RCI Studio%2 started ----")
                       .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
-                           QCoreApplication::applicationVersion()));
+                           version.isEmpty() ? QString() : QStringLiteral(" ") + version));
   }
   connectSession(session);
 }

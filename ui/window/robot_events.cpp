@@ -109,7 +109,7 @@ void RobotEventWatcher::errorsChanged(uint32_t before, uint32_t now) {
     text::RobotView view = text::viewOf(session_);
     view.live = &only_new;
     for (const text::OperatorMessage& m : text::activeProblems(view))
-      if (!m.detail.isEmpty()) say(Level::kError, tr("Error: %1").arg(m.line()), m.detail);
+      if (!m.detail.isEmpty()) say(Level::kError, tr("Robot reports: %1").arg(m.line()), m.detail);
   }
   if (cleared != 0) {
     const QString titles = titlesOf(cleared).join(QStringLiteral(", "));
