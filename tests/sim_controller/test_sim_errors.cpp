@@ -1,10 +1,14 @@
-// sim::Controller error bits: each of the 20 bits of SPEC.md §7 provoked by a command stream or a
-// scene event, reported in state().errors (alone, where the physics allows), with the motion
-// stopped (robot_mode kReflex) and the bit kept until automaticErrorRecovery.
+// sim::Controller error bits: each of the 20 bits (docs/simulator_controller.md, "Error bits")
+// provoked by a command stream or a scene event, reported in state().errors (alone, where the
+// physics allows), with the motion stopped (robot_mode kReflex) and the bit kept until
+// automaticErrorRecovery; then recovered with the controller's own commands and shown usable again
+// (a small joint motion towards the valid range, and hand guiding, run without a new error).
 #include <QtTest/QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include <xmate/cart_motion.h>
 #include <xmate/joint_motion.h>
@@ -32,6 +36,54 @@ int runUntilError(Harness& h, int max_cycles, const std::function<void(int)>& cy
     if (h.anyError()) return k;
   }
   return -1;
+}
+
+// A joint position motion to goal along a quintic (minimum-jerk) profile (the vendor's S-curve
+// generator refuses goals beyond the hardware range, where an error may have left a joint), then
+// 200 cycles of hold. Returns false when StartMove is refused or an error bit shows.
+bool moveTo(Harness& h, const std::array<double, 7>& goal) {
+  if (h.startMove(CM::kJointPosition, MG::kJointPosition) != kOk) return false;
+  const auto q0 = h.state().q;
+  double distance = 0;
+  for (size_t i = 0; i < 7; ++i) distance = std::max(distance, std::abs(goal[i] - q0[i]));
+  const int cycles = int(std::max(0.3, 4.0 * distance) * 1000);  // peak speed below 0.5 rad/s
+  for (int k = 1; k <= cycles && !h.anyError(); ++k) {
+    const double t = double(k) / cycles, s = t * t * t * (10 - 15 * t + 6 * t * t);
+    std::array<double, 7> q{};
+    for (size_t i = 0; i < 7; ++i) q[i] = q0[i] + s * (goal[i] - q0[i]);
+    h.stepJoint(q, k == cycles);
+  }
+  h.idle(200);
+  return !h.anyError() && !h.status().motion_active;
+}
+
+// After recovery the robot is usable again with the controller's own commands: the operator lets
+// go (no scene wrench), the motors come back on if the error switched them off, a small joint
+// motion towards `towards` (by default the middle of each joint's range; at most 0.03 rad per
+// joint) runs without an error, and so does a moment of hand guiding.
+void expectUsableAgain(Harness& h, std::optional<std::array<double, 7>> towards = std::nullopt) {
+  h.controller().setExternalWrench({});
+  h.idle(1);  // the state after the recovery
+  QVERIFY2(!h.anyError(), h.errorList().c_str());
+  if (!h.status().motors_on) QCOMPARE(h.setMotorPower(1), kOk);
+  h.idle(300);  // a stop ramp still running
+  QVERIFY2(!h.anyError(), h.errorList().c_str());
+  const auto& spec = xmate::model::robotSpec(h.controller().config().type);
+  const auto q = h.state().q;
+  std::array<double, 7> goal = q;
+  for (size_t i = 0; i < size_t(spec.dof); ++i) {
+    const double aim = towards ? (*towards)[i] : 0.5 * (spec.q_min[i] + spec.q_max[i]);
+    goal[i] = q[i] + std::clamp(aim - q[i], -0.03, 0.03);
+  }
+  QVERIFY2(moveTo(h, goal), qPrintable(QString("motion after recovery: %1 (%2)")
+                                           .arg(h.errorList().c_str())
+                                           .arg(h.controller().lastRefusal().c_str())));
+  QCOMPARE(h.startDrag(0, 2), kOk);
+  h.idle(300);
+  QVERIFY2(!h.anyError(), h.errorList().c_str());
+  QCOMPARE(h.empty(protocol::Command::kStopDrag), kOk);
+  h.idle(100);
+  QVERIFY2(!h.anyError(), h.errorList().c_str());
 }
 
 // The bit is set (and, if `alone`, no other), the motion has stopped, the robot is in reflex, and
@@ -96,6 +148,7 @@ class TestSimErrors : public QObject {
   void bit17TorqueDiscontinuity();
   void bit18TorqueRange();
   void bit19Instability();
+  void bit19ByEmergencyStop();
   void firstCommandMustStartAtTheCurrentPosition();
 };
 
@@ -114,6 +167,18 @@ void TestSimErrors::bit0ActualJointPosition() {
   });
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   expectStopped(h, kActualJointPositionLimitsViolation);
+  // J1 is still beyond its soft limit: once the push is gone, moving it further out is refused with
+  // bit 7 ...
+  h.controller().setExternalWrench({});
+  h.idle(300);
+  QVERIFY(h.state().q[0] > 10 * M_PI / 180);
+  QVERIFY(!moveTo(h, plus(h.state().q, 0, 0.02)));
+  QCOMPARE(h.errorList(), std::string("kCommandJointPositionLimitsViolation"));
+  QCOMPARE(h.recover(), kOk);
+  // ... and bringing it back in works (the usual check moves every joint towards its range's middle).
+  expectUsableAgain(h);
+  QVERIFY(moveTo(h, plus(h.state().q, 0, 5 * M_PI / 180 - h.state().q[0])));  // all the way in
+  QVERIFY(std::abs(h.state().q[0] - 5 * M_PI / 180) < 1e-4);
 }
 
 void TestSimErrors::bit1ActualCartesianPosition() {
@@ -137,6 +202,14 @@ void TestSimErrors::bit1ActualCartesianPosition() {
   QVERIFY(local.cwiseAbs().maxCoeff() > 0.1);
   QVERIFY(!h.status().motors_on);  // leaving the box powers the motors off
   expectStopped(h, kActualCartesianPositionLimitsViolation);
+  // Back on, the TCP still outside the box: no error for being there; J1 back towards the start
+  // brings it in, turning it further out trips bit 1 again.
+  expectUsableAgain(h, q0);
+  QVERIFY(!moveTo(h, plus(h.state().q, 0, 0.05)));
+  QVERIFY(h.state().errors[kActualCartesianPositionLimitsViolation]);
+  QVERIFY(!h.status().motors_on);
+  QCOMPARE(h.recover(), kOk);
+  expectUsableAgain(h, q0);
 }
 
 void TestSimErrors::bit2ActualElbow() {
@@ -157,6 +230,8 @@ void TestSimErrors::bit2ActualElbow() {
   QVERIFY2(h.state().errors[kActualCartesianMotionGeneratorElbowLimitViolation], h.errorList().c_str());
   QCOMPARE(h.errorList(), std::string("kActualCartesianMotionGeneratorElbowLimitViolation"));
   QCOMPARE(h.state().robot_mode, RobotMode::kReflex);
+  QCOMPARE(h.recover(), kOk);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit3ActualJointVelocity() {
@@ -173,6 +248,7 @@ void TestSimErrors::bit3ActualJointVelocity() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   QVERIFY(std::abs(h.state().dq_m[0]) > 2.175);
   expectStopped(h, kActualJointVelocityLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit4ActualCartesianVelocity() {
@@ -197,6 +273,7 @@ void TestSimErrors::bit4ActualCartesianVelocity() {
   qInfo("J1 at %.3f rad/s when the TCP speed tripped", h.state().dq_m[0]);
   QVERIFY(std::abs(h.state().dq_m[0]) < 2.175);
   expectStopped(h, kActualCartesianVelocityLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit5ActualJointAcceleration() {
@@ -212,6 +289,7 @@ void TestSimErrors::bit5ActualJointAcceleration() {
   const int k = runUntilError(h, 100, [&](int) { h.stepJoint(hold); });
   QVERIFY(k >= 0);
   expectStopped(h, kActualJointAccelerationLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit6ActualCartesianAcceleration() {
@@ -238,6 +316,7 @@ void TestSimErrors::bit6ActualCartesianAcceleration() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   qInfo("J1 at %.3f rad/s when the TCP acceleration tripped", h.state().dq_m[0]);
   expectStopped(h, kActualCartesianAccelerationLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit7CommandJointPosition() {
@@ -258,6 +337,7 @@ void TestSimErrors::bit7CommandJointPosition() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   QVERIFY(commanded > 5 * M_PI / 180 && commanded < 5 * M_PI / 180 + 0.01);  // tripped right at the limit
   expectStopped(h, kCommandJointPositionLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit8CommandCartesianPosition() {
@@ -282,6 +362,7 @@ void TestSimErrors::bit8CommandCartesianPosition() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   qInfo("J4 at %.1f deg when the pose left the workspace", h.state().q[3] * 180 / M_PI);
   expectStopped(h, kCommandCartesianPositionLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit9CommandElbow() {
@@ -296,6 +377,7 @@ void TestSimErrors::bit9CommandElbow() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   QVERIFY(std::abs(ramp.accelerationAt(0.001 * k) - 10) < 4000 * 0.0011);  // tripped as it passed 10 rad/s^2
   expectStopped(h, kCommandCartesianMotionGeneratorElbowLimitViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit10CommandJointVelocity() {
@@ -308,6 +390,7 @@ void TestSimErrors::bit10CommandJointVelocity() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   QVERIFY(std::abs(ramp.velocityAt(0.001 * k) - 2.175) < 14 * 0.0015);  // tripped as it passed 2.175 rad/s
   expectStopped(h, kCommandJointVelocityLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit11CommandCartesianVelocity() {
@@ -326,6 +409,7 @@ void TestSimErrors::bit11CommandCartesianVelocity() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   QVERIFY(std::abs(ramp.velocityAt(0.001 * k) - 2.5) < 24 * 0.0015);
   expectStopped(h, kCommandCartesianVelocityLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit12CommandJointAcceleration() {
@@ -338,6 +422,7 @@ void TestSimErrors::bit12CommandJointAcceleration() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   QVERIFY(std::abs(ramp.accelerationAt(0.001 * k) - 15) < 4000 * 0.0015);
   expectStopped(h, kCommandJointAccelerationLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit13CommandCartesianAcceleration() {
@@ -354,6 +439,7 @@ void TestSimErrors::bit13CommandCartesianAcceleration() {
   QVERIFY2(k > 0, qPrintable(QString("k = %1, errors: %2").arg(k).arg(h.errorList().c_str())));
   QVERIFY(std::abs(ramp.accelerationAt(0.001 * k) - 10) < 4000 * 0.0015);
   expectStopped(h, kCommandCartesianAccelerationLimitsViolation);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit14CommandAccelerationDiscontinuity() {
@@ -375,6 +461,8 @@ void TestSimErrors::bit14CommandAccelerationDiscontinuity() {
   const JerkRamp ramp{4000, 14};
   for (int k = 0; k < 100; ++k) h.stepJoint(plus(q1, 0, ramp.positionAt(0.001 * k)));
   QVERIFY2(!h.anyError(), h.errorList().c_str());
+  QCOMPARE(h.stopMove(), kOk);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit15Collision() {
@@ -396,6 +484,7 @@ void TestSimErrors::bit15Collision() {
   for (size_t i = 0; i < 7; ++i) over = over || std::abs(tau_ext[i]) > max[i];
   QVERIFY(over);
   expectStopped(h, kCollision);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit16InvalidFrame() {
@@ -413,6 +502,7 @@ void TestSimErrors::bit16InvalidFrame() {
   c.motion.toolTobase_pos_c = pose;
   h.stepCommand(c);
   expectStopped(h, kCartesianPositionMotionGeneratorInvalidFrame);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit17TorqueDiscontinuity() {
@@ -426,6 +516,7 @@ void TestSimErrors::bit17TorqueDiscontinuity() {
   tau[6] = 2.0;  // +1.1 Nm in 1 ms
   h.stepTorque(tau);
   expectStopped(h, kCommandTorqueDiscontinuity);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit18TorqueRange() {
@@ -452,6 +543,7 @@ void TestSimErrors::bit18TorqueRange() {
   // too (every collision threshold is below the joint's torque limit), so both bits are set.
   QVERIFY(h.state().errors[kCollision]);
   expectStopped(h, kCommandTorqueRangeViolation, /*alone=*/false);
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::bit19Instability() {
@@ -462,6 +554,28 @@ void TestSimErrors::bit19Instability() {
   const int k = runUntilError(h, 100, [&](int) { h.lose(); });
   QCOMPARE(k, 15);  // the 16th lost command in a row (default threshold 15)
   expectStopped(h, kInstabilityDetection);
+  expectUsableAgain(h);
+}
+
+void TestSimErrors::bit19ByEmergencyStop() {
+  // The e-stop pressed during a motion: bit 19, motors off. Recovery needs the button released
+  // first; then the motors come back with setMotorPower(1).
+  Harness h;
+  h.powerOnAndSettle();
+  QCOMPARE(h.startMove(CM::kJointPosition, MG::kJointPosition), kOk);
+  const auto q0 = h.state().q;
+  h.stepJoint(q0);
+  h.controller().setEmergencyStop(true);
+  h.idle(1);
+  QCOMPARE(h.errorList(), std::string("kInstabilityDetection"));
+  QVERIFY(!h.status().motors_on);
+  QCOMPARE(h.recover(), uint8_t(protocol::ErrorRecoveryStatus::kManualRecoveryRequired));
+  QCOMPARE(h.setMotorPower(1), uint8_t(1));
+  h.controller().setEmergencyStop(false);
+  QCOMPARE(h.recover(), kOk);
+  h.idle(1);
+  QVERIFY(!h.anyError());
+  expectUsableAgain(h);
 }
 
 void TestSimErrors::firstCommandMustStartAtTheCurrentPosition() {

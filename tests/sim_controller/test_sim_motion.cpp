@@ -459,13 +459,24 @@ void TestSimMotion::stepIsCheapAndDoesNotAllocate() {
           std::chrono::duration<double, std::micro>(t1 - t0).count() / kCycles, kCycles, allocations);
     QCOMPARE(allocations, std::size_t(0));
   }
-  // Hand guiding too.
+  // Hand guiding too, pushed against the walls of soft limits 2 deg away and of a safety box.
   Harness h;
   h.powerOnAndSettle();
+  protocol::SetJointLimitRequest limits;
+  for (size_t i = 0; i < 7; ++i) {
+    limits.upper[i] = h.state().q[i] * 180 / M_PI + 2;
+    limits.lower[i] = h.state().q[i] * 180 / M_PI - 2;
+  }
+  QCOMPARE(h.status(limits), uint8_t(0));
+  Eigen::Isometry3d box = poseOf(h.state().toolTobase_pos_m);
+  box.linear().setIdentity();
+  QCOMPARE(h.status(protocol::SetCartesianLimitRequest{{0.06, 0.06, 0.06}, rowMajor(box), true}), uint8_t(0));
   QCOMPARE(h.startDrag(1, 2), uint8_t(0));
+  h.controller().setExternalWrench({150, 0, -150, 0, 0, 0});
   const std::size_t before = planning_test::allocationCount();
   h.idle(1000);
   QCOMPARE(planning_test::allocationCount() - before, std::size_t(0));
+  QVERIFY2(!h.anyError(), h.errorList().c_str());
 }
 
 QTEST_APPLESS_MAIN(TestSimMotion)

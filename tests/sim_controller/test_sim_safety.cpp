@@ -181,9 +181,40 @@ void TestSimSafety::safetyBoxExitPowersOff() {
   const double depth = start.translation().z() - poseOf(h.state().toolTobase_pos_m).translation().z();
   qInfo("left the box at 0.15 m below the start; braked to rest at %.4f m", depth);
   QVERIFY(depth > 0.15 && depth < 0.16);
-  QCOMPARE(h.setMotorPower(1), kOk);  // still outside: powering on trips again
-  h.idle(1);
+  // Still outside: after recovery the motors come back on -- being outside is no error, only going
+  // further out is (docs/simulator_controller.md, "There is always a way back").
+  QCOMPARE(h.recover(), kOk);
+  QCOMPARE(h.setMotorPower(1), kOk);
+  h.idle(100);
+  QVERIFY(h.status().motors_on);
+  QVERIFY2(!h.anyError(), h.errorList().c_str());
+  // A straight line along z by dz from where the TCP is; true if it ran without an error.
+  const auto lineZ = [&](double dz) {
+    if (h.startMove(CM::kCartesianPosition, MG::kCartesianPosition) != kOk) return false;
+    const Eigen::Isometry3d from = poseOf(h.state().toolTobase_pos_m);
+    CartMotionGenerator line(0.3, std::abs(dz));
+    line.calculateSynchronizedValues_cart(0);
+    bool finished = false;
+    for (int k = 0; !finished && !h.anyError(); ++k) {
+      double s = 0;
+      finished = line.calculateDesiredValues_cart(0.001 * k, &s);
+      Eigen::Isometry3d pose = from;
+      pose.translation().z() += std::copysign(s, dz);
+      h.stepCartesian(pose, finished);
+    }
+    h.idle(200);
+    return !h.anyError();
+  };
+  QVERIFY(!lineZ(-0.01));  // further out
+  QCOMPARE(h.errorList(), std::string("kActualCartesianPositionLimitsViolation"));
   QVERIFY(!h.status().motors_on);
+  QCOMPARE(h.recover(), kOk);
+  QCOMPARE(h.setMotorPower(1), kOk);
+  h.idle(100);
+  QVERIFY2(lineZ(0.05), h.errorList().c_str());  // back in
+  const double inside = start.translation().z() - poseOf(h.state().toolTobase_pos_m).translation().z();
+  qInfo("moved back in: %.4f m below the start (the face at 0.15)", inside);
+  QVERIFY(inside < 0.15);
 }
 
 void TestSimSafety::autoLimitStopsSmoothlyAtTheSoftLimit() {

@@ -53,6 +53,7 @@ Controller::Impl::Impl(const SimConfig& c)
   meas.psi = model::armAngle(arm, plant.q);
   meas.joint_torque = meas.joint_torque_filtered = model::gravityTorques(arm, plant.q);
   if (motors_on) meas.motor_torque = meas.motor_torque_filtered = meas.joint_torque;
+  resetAllowances();
   state.message_id = 1;
   updateCommanded();
   fillState();
@@ -149,6 +150,20 @@ void Controller::setActualPayload(double mass, const std::array<double, 3>& cent
   payload.inertia = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(inertia.data());
   model::setPayload(impl_->plant_arm, payload);  // validates, throws std::invalid_argument
   impl_->plant_follows_load = false;
+}
+
+void Controller::placeArm(const std::array<double, 7>& q) {
+  const model::RobotSpec& spec = impl_->spec;
+  for (int i = 0; i < spec.dof; ++i) {
+    const auto k = static_cast<size_t>(i);
+    const double low = spec.q_min[k] - kPlaceBeyondHardware, high = spec.q_max[k] + kPlaceBeyondHardware;
+    if (!std::isfinite(q[k]) || q[k] < low || q[k] > high)
+      throw std::invalid_argument("sim::Controller::placeArm: q[" + std::to_string(i) + "] = " + std::to_string(q[k]) +
+                                  " rad is outside [" + std::to_string(low) + ", " + std::to_string(high) +
+                                  "] (the joint range of the " + std::string(spec.display_name) + " widened by " +
+                                  std::to_string(kPlaceBeyondHardware) + " rad)");
+  }
+  impl_->placeArm(toJointVector(q, spec.dof));
 }
 
 void Controller::followConfiguredLoad() {

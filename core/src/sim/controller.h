@@ -47,6 +47,9 @@ struct SimStatus {
   bool actual_payload_follows_load = true;       // false after setActualPayload()
 };
 
+// How far beyond the hardware limits placeArm may put a joint, rad (about 11.5 deg).
+inline constexpr double kPlaceBeyondHardware = 0.2;
+
 class Controller {
  public:
   // Loads the model's robot description (URDF and inertias, model/urdf_loader.h); throws
@@ -88,6 +91,11 @@ class Controller {
   void setActualPayload(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia);
   // Back to "the actual payload is the configured load".
   void followConfiguredLoad();
+  // Puts the arm at q (rad), at rest, as if it had been moved there while unpowered -- also beyond
+  // the soft and hardware limits, by up to kPlaceBeyondHardware (a sagging payload, a drifted
+  // robot, fault injection). A running motion or hand guiding ends (as by a stop); a powered arm is
+  // then held at q. Throws std::invalid_argument for a non-finite q or one farther out than that.
+  void placeArm(const std::array<double, 7>& q);
 
   // Allocation-free snapshot (safe to take every cycle).
   SimStatus status() const;

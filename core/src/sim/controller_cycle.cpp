@@ -16,6 +16,7 @@ void Controller::Impl::step(const RobotCommand* command) {
   if (activity == Activity::kMotion) takeCommand(command);
   advanceReference();
   simulateCycle();
+  ratchetAllowances();
   supervise();
   if (recovery_cycles_left > 0) --recovery_cycles_left;
   ++state.message_id;
@@ -45,8 +46,8 @@ void Controller::Impl::advanceReference() {
                   alpha(cartesian ? settings.cartesian_filter_hz : settings.joint_filter_hz));
       // auto_limit brakes towards the soft limits at half the rated deceleration.
       const JointVector next =
-          settings.auto_limit ? ref.soft_limit_clamp.next(ref.track, ref.joint_filter, settings.soft_lower,
-                                                          settings.soft_upper, 0.5 * limits.acceleration, spec.dof,
+          settings.auto_limit ? ref.soft_limit_clamp.next(ref.track, ref.joint_filter, joint_allowance.lower,
+                                                          joint_allowance.upper, 0.5 * limits.acceleration, spec.dof,
                                                           kCycle)
                               : ref.joint_filter;
       ref.track.advanceTo(next, kCycle);
@@ -154,6 +155,10 @@ void Controller::Impl::simulateCycle() {
         joint_damping[i] = params.armature[i] >= 0.1 ? kDragJointDampingLarge : kDragJointDampingSmall;
   }
 
+  // Hand guiding: the limits are walls (drag_walls.h); the TCP is linearised over the cycle for them.
+  const bool dragging = motors_on && activity == Activity::kDrag;
+  const TcpLinearization tcp = dragging ? tcpLinearization() : TcpLinearization{};
+
   const JointVector dq_before = plant.dq;
   JointVector motor_sum = JointVector::Zero();
   JointVector drive_sum = JointVector::Zero();  // motor torque minus friction
@@ -162,11 +167,13 @@ void Controller::Impl::simulateCycle() {
       advanceBraked(plant, params, kSubstep);
       continue;
     }
-    const JointVector tau =
-        saturateTorque(params, servoTorque(double(s - 1) / kSubsteps, cartesian, gravity, joint_damping));
+    JointVector demand = servoTorque(double(s - 1) / kSubsteps, cartesian, gravity, joint_damping);
+    if (dragging) demand += dragWallTorque(tcp);
+    const JointVector tau = saturateTorque(params, demand);
     motor_sum += tau;
     drive_sum += tau - frictionTorque(params, plant.dq);
     advancePowered(plant, *physical, params, tau, scene_torque, kSubstep);
+    if (dragging) holdAtDragWalls(tcp, *physical);  // the brakes hold what the motors cannot
   }
   measure(dq_before, motor_sum, drive_sum, scene_torque, physical->bias);
 }
@@ -207,7 +214,7 @@ void Controller::Impl::supervise() {
   if (!motors_on) return;
   ErrorBits bits{};
   bool power_off = false;
-  if (settings.safety_box.active && !insideSafetyBox(settings.safety_box, meas.tcp.translation())) {
+  if (settings.safety_box.active && !box_allowance.contains(settings.safety_box, meas.tcp.translation())) {
     raise(bits, kActualCartesianPositionLimitsViolation);
     power_off = true;
   }
@@ -224,8 +231,8 @@ void Controller::Impl::supervise() {
     checks.elbow = cartesian_motion || cartesian_drag;
     checks.accelerations = activity == Activity::kMotion;
     const MeasuredMotion measured{plant.q, plant.dq, meas.ddq, meas.twist, meas.twist_rate, meas.psi_rate};
-    checkActualMotion(measured, settings.soft_lower, settings.soft_upper, limits, model::controllerCartesianLimits(),
-                      checks, spec.dof, bits);
+    checkActualMotion(measured, joint_allowance.lower, joint_allowance.upper, limits,
+                      model::controllerCartesianLimits(), checks, spec.dof, bits);
   }
   if (!anyError(bits)) return;
   raiseErrors(bits);

@@ -13,9 +13,11 @@
 #include "model/arm_model.h"
 #include "model/chain.h"
 #include "model/robot_spec.h"
+#include "sim/allowance.h"
 #include "sim/command_checks.h"
 #include "sim/controller.h"
 #include "sim/controller_settings.h"
+#include "sim/drag_walls.h"
 #include "sim/error_bits.h"
 #include "sim/plant.h"
 #include "sim/reference.h"
@@ -166,6 +168,16 @@ struct Controller::Impl {
   void powerOn();
   void powerOff();                       // brakes engage; any motion or guiding ends
   void startGuiding(int space, int type);
+  // The scene puts the arm at q, at rest (as if moved there unpowered): motion or guiding ends.
+  void placeArm(const JointVector& q);
+
+  // ---- controller_limits.cpp: allowances (allowance.h) and the walls of hand guiding (drag_walls.h)
+  void resetAllowances();         // afresh at the current pose: power-on, StartMove, StartDrag, placed arm
+  void ratchetAllowances();       // every cycle, after the physics
+  void widenIkLimitsToAllowance();  // the IK may return solutions as far out as the allowance
+  TcpLinearization tcpLinearization() const;
+  JointVector dragWallTorque(const TcpLinearization& tcp) const;
+  void holdAtDragWalls(const TcpLinearization& tcp, const FrozenDynamics& physical);
 
   // ---- controller_cycle.cpp
   void step(const RobotCommand* command);
@@ -203,6 +215,9 @@ struct Controller::Impl {
   ControllerSettings settings;
 
   PlantState plant;
+  JointAllowance joint_allowance;  // the joint limits enforced: soft limits, or wider where the arm is beyond them
+  BoxAllowance box_allowance;      // the same for the faces of the safety box
+  WallOnsets wall_onsets;          // where the springs of the drag walls begin
   FrozenDynamics model_dynamics;
   FrozenDynamics plant_dynamics;
 

@@ -80,6 +80,7 @@ uint8_t Controller::Impl::startMove(const uint8_t* p, size_t n) {
   ref.torque_filter.setZero();
   ref.soft_limit_clamp.reset(ref.joint_filter);
   success.clear();
+  resetAllowances();  // a joint or the TCP beyond a limit may move back, not further out
   activity = Activity::kMotion;
   return code(StartMoveStatus::kSuccess);
 }
@@ -135,7 +136,7 @@ void Controller::Impl::acceptJointCommand(const RobotCommand& command, double t,
   if (settings.auto_limit)
     checkJointPosition(q, -unbounded(), unbounded(), spec.dof, bits);  // finite; the servo clamps
   else
-    checkJointPosition(q, settings.soft_lower, settings.soft_upper, spec.dof, bits);
+    checkJointPosition(q, joint_allowance.lower, joint_allowance.upper, spec.dof, bits);
   if (anyError(bits)) return;
   if (motion.awaiting_first_command) startReferenceAt(q);
   motion.q_command = motion.joint_target = q;
@@ -169,6 +170,7 @@ void Controller::Impl::acceptCartesianCommand(const RobotCommand& command, doubl
   if (seven_axis) checkElbowDerivatives(motion.psi_rates, model::controllerCartesianLimits(), bits);
 
   JointVector q;
+  widenIkLimitsToAllowance();
   switch (model::inverseKinematics(arm, matrix, psi, motion.q_command, q)) {
     case model::IkStatus::kOk: break;
     case model::IkStatus::kSingular: raise(bits, kCartesianPositionMotionGeneratorInvalidFrame); return;
@@ -178,7 +180,7 @@ void Controller::Impl::acceptCartesianCommand(const RobotCommand& command, doubl
   }
   motion.joint_rates.push(q - motion.q_command, t);
   checkJointVelocity(motion.joint_rates, limits, spec.dof, bits);
-  if (!settings.auto_limit) checkJointPosition(q, settings.soft_lower, settings.soft_upper, spec.dof, bits);
+  if (!settings.auto_limit) checkJointPosition(q, joint_allowance.lower, joint_allowance.upper, spec.dof, bits);
   if (anyError(bits)) return;
   if (motion.awaiting_first_command) startReferenceAt(q);
   motion.pose_command = pose;
@@ -228,7 +230,7 @@ void Controller::Impl::finishMotion() {
     ref.ramp.active = false;
     ref.hold_target = motion.joint_target;
     if (settings.auto_limit) {  // a command beyond the soft limits ends at the limit the arm stands at
-      ref.hold_target = ref.hold_target.cwiseMax(settings.soft_lower).cwiseMin(settings.soft_upper);
+      ref.hold_target = ref.hold_target.cwiseMax(joint_allowance.lower).cwiseMin(joint_allowance.upper);
       ref.joint_filter = ref.track.current;
     }
   } else {
@@ -256,6 +258,7 @@ void Controller::Impl::powerOn() {
   ref.ramp.active = false;
   ref.track.resetAt(plant.q, JointVector::Zero(), kCycle);
   ref.joint_filter = ref.hold_target = plant.q;
+  resetAllowances();  // outside a limit or the box: no error for being there, only for going further out
 }
 
 void Controller::Impl::powerOff() {
@@ -269,6 +272,7 @@ void Controller::Impl::startGuiding(int space, int type) {
   drag.space = space;
   drag.type = type;
   drag.anchor = meas.tcp;
+  resetAllowances();
 }
 
 }  // namespace xmate::sim

@@ -154,9 +154,10 @@ uint8_t Controller::Impl::setCartesianLimit(const uint8_t* p, size_t n) {
   box.frame = toIsometry(r.frame);
   if (box.active && motors_on && !insideSafetyBox(box, meas.tcp.translation()))
     return refuse(kNotPossible,
-                  "setCartesianLimit: the TCP is outside the requested box, the robot would power off at once; "
-                  "move the TCP inside first or enlarge the box");
+                  "setCartesianLimit: the TCP is outside the requested box; move the TCP inside first or enlarge "
+                  "the box");
   settings.safety_box = box;
+  box_allowance.reset(box, meas.tcp.translation());
   return kOk;
 }
 
@@ -176,6 +177,7 @@ uint8_t Controller::Impl::setJointLimit(const uint8_t* p, size_t n) {
   settings.soft_upper = upper;
   settings.soft_lower = lower;
   settings.auto_limit = r.auto_limit;
+  joint_allowance.reset(plant.q, lower, upper, spec.dof);
   return kOk;
 }
 
