@@ -28,6 +28,8 @@ xmate::sim::ServerConfig serverConfig(const rcisim::Options& o) {
   c.clock = o.lockstep ? xmate::sim::ClockMode::kLockStep : xmate::sim::ClockMode::kRealTime;
   c.lockstep_timeout_ms = o.lockstep_timeout_ms;
   c.reboot_pause_ms = o.reboot_pause_ms;
+  c.connect_timeout_ms = o.connect_timeout_ms;
+  c.idle_timeout_ms = o.idle_timeout_ms;
   c.realtime = o.realtime;
   c.sim.type = o.model->type;
   c.sim.do_to_di_loopback = o.loopback_io;

@@ -54,6 +54,10 @@ std::string usageText() {
          "  --loopback-io         wire DO k to DI k\n"
          "  --motors-on           start with the motors powered on\n"
          "  --reboot-pause MS     how long a reboot takes (default 2000)\n"
+         "  --connect-timeout MS  a connection that has not sent Connect by then is closed (default 3000;\n"
+         "                        0 = never)\n"
+         "  --idle-timeout MS     a session silent this long gives way to a new client (default 10000;\n"
+         "                        0 = never)\n"
          "  --no-realtime         do not ask for SCHED_FIFO and memory locking\n"
          "  --help                this text\n"
          "\n"
@@ -97,6 +101,10 @@ Options parseOptions(int argc, const char* const* argv) {
       o.motors_on = true;
     } else if (arg == "--reboot-pause") {
       o.reboot_pause_ms = int(parseNumber(arg, value(), 0, 600000));
+    } else if (arg == "--connect-timeout") {
+      o.connect_timeout_ms = int(parseNumber(arg, value(), 0, 3600000));
+    } else if (arg == "--idle-timeout") {
+      o.idle_timeout_ms = int(parseNumber(arg, value(), 0, 3600000));
     } else if (arg == "--no-realtime") {
       o.realtime = false;
     } else {

@@ -23,6 +23,8 @@ struct Options {
   bool print_port = false;
   bool realtime = true;
   int reboot_pause_ms = 2000;
+  int connect_timeout_ms = 3000;  // a connection must send Connect within this (0: no limit)
+  int idle_timeout_ms = 10000;    // a silent session gives way to a new client after this (0: never)
   bool help = false;
 };
 

@@ -45,6 +45,7 @@ void decodeRequest(Command command, const uint8_t* data, size_t size) {
 
 void decodeResponses(const uint8_t* data, size_t size) {
   decodeAs<ByteResponse>(data, size);
+  decodeAs<ConnectResponse>(data, size);
   decodeAs<GetDIStateResponse>(data, size);
   decodeAs<LoadRobotModelResponse>(data, size);
 }

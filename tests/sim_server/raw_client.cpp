@@ -20,6 +20,14 @@ RawClient::RawClient(uint16_t server_port) {
 
 uint8_t RawClient::handshake() { return requestByte(protocol::ConnectRequest{udpPort()}); }
 
+protocol::ConnectResponse RawClient::handshakeResponse() {
+  const std::vector<uint8_t> payload = request(protocol::encodeFrame(++sequence_, protocol::ConnectRequest{udpPort()}));
+  protocol::ConnectResponse r;
+  if (protocol::decodePayload(payload.data(), payload.size(), r) != protocol::DecodeStatus::kOk)
+    throw std::runtime_error("response is not a ConnectResponse");
+  return r;
+}
+
 std::vector<uint8_t> RawClient::request(const protocol::Frame& frame) {
   if (tcp_.sendAll(frame.data(), frame.size(), 2000) != net::IoResult::kOk)
     throw std::runtime_error("cannot send the request");

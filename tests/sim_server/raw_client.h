@@ -31,6 +31,8 @@ class RawClient {
 
   // Sends ConnectRequest{our UDP port}; returns the status byte of ConnectResponse.
   uint8_t handshake();
+  // The same, returning the whole ConnectResponse (a busy simulator names the session's holder).
+  xmate::protocol::ConnectResponse handshakeResponse();
   // Sends a request and returns the response payload (without the frame header). Throws
   // std::runtime_error if the response does not come, or has another sequence number.
   std::vector<uint8_t> request(const xmate::protocol::Frame& frame);

@@ -115,13 +115,16 @@ class TestRciSim : public QObject {
     r = runToEnd({"--port"});
     QCOMPARE(r.exit_code, 2);
     QVERIFY(r.err.contains("--port needs a value"));
+    r = runToEnd({"--idle-timeout", "-5"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--idle-timeout takes a whole number from 0 to 3600000"), qPrintable(r.err));
   }
 
   void helpListsTheOptions() {
     const Finished r = runToEnd({"--help"});
     QCOMPARE(r.exit_code, 0);
     for (const char* option : {"--model", "--bind", "--port", "--print-port", "--lockstep", "--control-port",
-                               "--loopback-io", "--no-realtime"})
+                               "--loopback-io", "--no-realtime", "--connect-timeout", "--idle-timeout"})
       QVERIFY2(r.out.contains(option), option);
   }
 

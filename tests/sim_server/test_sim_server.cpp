@@ -1,10 +1,18 @@
 // Tests of sim::Server over real loopback sockets with a raw client: the Connect handshake, the
 // 1 kHz stream, lock-step stepping and lost answers, every packet fault as seen on the wire,
-// session rules, reboot, kill, and the bind failure message.
+// session rules (one at a time, the busy answer naming the holder, idle connections and silent
+// sessions giving way), reboot, kill, and the bind failure message.
 #include <QtTest>
 
+#include <arpa/inet.h>
+
+#include <cstring>
 #include <stdexcept>
+#include <thread>
 #include <vector>
+
+#include <xmate/exception.h>
+#include <xmate/robot.h>
 
 #include "test_support.h"
 
@@ -282,13 +290,113 @@ class TestSimServer : public QObject {
     QCOMPARE(server->status().counters.commands_lost, uint64_t(2));
   }
 
-  void secondClientIsTurnedAway() {
+  void secondClientIsToldWhoHoldsTheSession() {
     auto server = startServer();
     auto client = connectedClient(*server);
-    net::TcpConnection second = net::TcpConnection::connect(net::makeEndpoint("127.0.0.1", server->port()), 2000);
+    RawClient second(server->port());
+    const protocol::ConnectResponse r = second.handshakeResponse();
+    QCOMPARE(int(r.status), int(protocol::ConnectStatus::kBusy));
+    QVERIFY(r.has_holder);
+    const sockaddr_in holder = client->tcp().local().addr;
+    QCOMPARE(std::memcmp(r.holder_ip.data(), &holder.sin_addr.s_addr, 4), 0);
+    QCOMPARE(r.holder_port, ntohs(holder.sin_port));
     uint8_t byte = 0;
-    QCOMPARE(second.readExact(&byte, 1, 10000), net::IoResult::kClosed);
-    QCOMPARE(int(client->requestByte(Command::kGetMotorState)), 0);  // the first session goes on
+    QCOMPARE(second.tcp().readExact(&byte, 1, 10000), net::IoResult::kClosed);  // then closed
+    QCOMPARE(int(client->requestByte(Command::kGetMotorState)), 0);            // the first session goes on
+    QCOMPARE(server->status().counters.clients_refused, uint64_t(1));
+  }
+
+  // The client library turns the busy answer into a TcpException naming the holder.
+  void libraryClientSaysWhoHoldsTheSession() {
+    auto server = startServer();
+    auto client = connectedClient(*server);
+    xmate::Robot robot("127.0.0.1", server->port(), xmate::XMATE7_PRO);
+    try {
+      robot.connect();
+      QFAIL("connect must fail while another client holds the session");
+    } catch (const xmate::TcpException& e) {
+      const QString holder = QString::fromStdString(client->tcp().local().toString());
+      QVERIFY2(QString(e.what()).contains("the controller's session is held by " + holder +
+                                          " (another program is connected); close that program or wait until its "
+                                          "session ends"),
+               e.what());
+    }
+    QCOMPARE(int(client->requestByte(Command::kGetMotorState)), 0);
+  }
+
+  // A connection that never sends Connect is closed after connect_timeout_ms; then a real client
+  // connects.
+  void idleConnectionIsDroppedAfterTheTimeout() {
+    sim::ServerConfig config;
+    config.connect_timeout_ms = 300;
+    auto server = startServer(config);
+    net::TcpConnection idle = net::TcpConnection::connect(net::makeEndpoint("127.0.0.1", server->port()), 2000);
+    QVERIFY(eventually([&] { return server->status().session; }));
+    uint8_t byte = 0;
+    QCOMPARE(idle.readExact(&byte, 1, 10000), net::IoResult::kClosed);
+    QVERIFY(eventually([&] { return !server->status().session; }));
+    QCOMPARE(server->status().counters.sessions_dropped, uint64_t(1));
+    xmate::Robot robot("127.0.0.1", server->port(), xmate::XMATE7_PRO);
+    robot.connect();
+    QCOMPARE(robot.getMotorState(), 0);
+  }
+
+  // A client's Connect takes the controller from a connection that has not sent Connect yet.
+  void connectTakesOverAConnectionWithoutConnect() {
+    sim::ServerConfig config;
+    config.connect_timeout_ms = 600'000;  // only the takeover can end the idle connection
+    auto server = startServer(config);
+    net::TcpConnection idle = net::TcpConnection::connect(net::makeEndpoint("127.0.0.1", server->port()), 2000);
+    QVERIFY(eventually([&] { return server->status().session; }));
+    auto client = connectedClient(*server);
+    uint8_t byte = 0;
+    QCOMPARE(idle.readExact(&byte, 1, 10000), net::IoResult::kClosed);
+    QCOMPARE(int(client->requestByte(Command::kGetMotorState)), 0);
+  }
+
+  // A silent session keeps the controller while nobody else asks; a new client's Connect then takes
+  // it over. A session that is guiding (or moving) is not silent.
+  void silentSessionGivesWayToANewClient() {
+    sim::ServerConfig config;
+    config.idle_timeout_ms = 200;
+    auto server = startServer(config);
+    auto first = connectedClient(*server);
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));  // silent beyond the timeout ...
+    QCOMPARE(int(first->requestByte(Command::kGetMotorState)), 0);  // ... nobody else wants it: still served
+    QCOMPARE(int(first->requestByte(protocol::SetMotorPowerRequest{1})), 0);
+    QCOMPARE(int(first->requestByte(protocol::StartDragRequest{0, 2})), 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));  // guiding: not silent
+    {
+      RawClient refused(server->port());
+      QCOMPARE(int(refused.handshakeResponse().status), int(protocol::ConnectStatus::kBusy));
+    }
+    QCOMPARE(int(first->requestByte(Command::kStopDrag)), 0);
+    QVERIFY(eventually([&] { return !server->status().sim.dragging; }));
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));  // silent again
+    auto second = connectedClient(*server);
+    uint8_t byte = 0;
+    QCOMPARE(first->tcp().readExact(&byte, 1, 10000), net::IoResult::kClosed);
+    QCOMPARE(int(second->requestByte(Command::kGetMotorState)), 1);  // the motors stayed on
+    QCOMPARE(server->status().counters.sessions_dropped, uint64_t(1));
+  }
+
+  // The client's message when the controller closes the connection without answering does not
+  // blame the address (something did answer there).
+  void closedWithoutAnswerDoesNotBlameTheAddress() {
+    net::TcpListener listener;
+    listener.listen("127.0.0.1", 0);
+    std::thread closer([&] {
+      auto conn = listener.accept(10000);  // accepts, then closes at once
+    });
+    xmate::Robot robot("127.0.0.1", listener.localPort(), xmate::XMATE7_PRO);
+    try {
+      robot.connect();
+      QFAIL("connect must fail");
+    } catch (const xmate::TcpException& e) {
+      QVERIFY2(QString(e.what()).contains("closed the connection without answering"), e.what());
+      QVERIFY2(!QString(e.what()).contains("check the IP"), e.what());
+    }
+    closer.join();
   }
 
   void closingTheSessionStopsStreamAndMotion() {

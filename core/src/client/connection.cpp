@@ -13,6 +13,14 @@ namespace {
 
 void logToStderr(const std::string& line) { std::fprintf(stderr, "rci: %s\n", line.c_str()); }
 
+// "192.168.0.7:40211" from the busy ConnectResponse (a simulator extension, docs/protocol.md).
+std::string holderText(const protocol::ConnectResponse& r) {
+  if (!r.has_holder) return "another client";
+  const auto& ip = r.holder_ip;
+  return std::to_string(ip[0]) + "." + std::to_string(ip[1]) + "." + std::to_string(ip[2]) + "." +
+         std::to_string(ip[3]) + ":" + std::to_string(r.holder_port);
+}
+
 // The UDP socket's kernel buffers: room for ~50 states, so a short stall of the real-time thread
 // loses nothing, while a long one does not queue seconds of stale states.
 constexpr int kUdpReceiveBufferBytes = 64 * 1024;
@@ -111,18 +119,22 @@ void Connection::handshake() {
   protocol::ConnectRequest request;
   request.udp_port = udp_port_;
   const auto payload = this->request("connect", request, options_.timeouts.connect_ms);
-  protocol::ByteResponse response;
+  protocol::ConnectResponse response;
   if (protocol::decodePayload(payload.data(), payload.size(), response) != protocol::DecodeStatus::kOk)
     throw ProtocolException("connect: the controller's ConnectResponse is " + std::to_string(payload.size()) +
                             " bytes, not 5; it speaks another protocol version");
-  if (response.value == uint8_t(protocol::ConnectStatus::kIncompatibleLibraryVersion))
+  if (response.status == uint8_t(protocol::ConnectStatus::kBusy))
+    throw TcpException("connect: the controller at " + ip_ + ":" + std::to_string(port_) +
+                       " refused the session: the controller's session is held by " + holderText(response) +
+                       " (another program is connected); close that program or wait until its session ends");
+  if (response.status == uint8_t(protocol::ConnectStatus::kIncompatibleLibraryVersion))
     throw ProtocolException(
         "connect: the controller at " + ip_ + ":" + std::to_string(port_) +
         " refused the session: incompatible library version. This client speaks the RCI wire format of "
         "client SDK 1.4 (RobotState 1247 bytes, RobotCommand 290 bytes); use a client library that "
         "matches the controller's RCI version, or update the controller");
-  if (response.value != uint8_t(protocol::ConnectStatus::kSuccess))
-    throw ProtocolException("connect: unknown ConnectResponse status " + std::to_string(response.value));
+  if (response.status != uint8_t(protocol::ConnectStatus::kSuccess))
+    throw ProtocolException("connect: unknown ConnectResponse status " + std::to_string(response.status));
 }
 
 std::vector<uint8_t> Connection::requestFrame(const char* call, const std::function<protocol::Frame(uint32_t)>& encode,

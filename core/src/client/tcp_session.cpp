@@ -37,6 +37,11 @@ void TcpSession::fail(const char* call, const char* what, net::IoResult result, 
   }
   connection_.close();
   open_.store(false, std::memory_order_release);
+  if (result == net::IoResult::kClosed)  // someone answered at this address: the IP and port are right
+    throw TcpException(message +
+                       "the controller closed the connection without answering (it may be busy with another "
+                       "program's session, rebooting or shutting down); the session is closed: call reconnect() "
+                       "when the controller is free");
   throw TcpException(message + net::toString(result) +
                      "; the session is closed: check the IP and port, then call reconnect()");
 }

@@ -242,6 +242,36 @@ RCI_CODEC(GetDIStateResponse)
 RCI_CODEC(LoadRobotModelResponse)
 #undef RCI_CODEC
 
+Frame encodeFrame(uint32_t sequence, const ConnectResponse& m) {
+  std::array<uint8_t, kFrameHeaderSize + 11> buf{};
+  ByteWriter body(buf.data() + kFrameHeaderSize, buf.size() - kFrameHeaderSize);
+  body.be32(static_cast<uint32_t>(Command::kConnect));
+  body.u8(m.status);
+  if (m.has_holder) {
+    for (uint8_t b : m.holder_ip) body.u8(b);
+    body.be16(m.holder_port);
+  }
+  ByteWriter head(buf.data(), kFrameHeaderSize);
+  head.be16(static_cast<uint16_t>(body.written()));
+  head.be32(sequence);
+  return Frame(buf.begin(), buf.begin() + kFrameHeaderSize + body.written());
+}
+
+DecodeStatus decodePayload(const uint8_t* p, size_t n, ConnectResponse& m) {
+  constexpr size_t kBare = 5, kWithHolder = 11;
+  if (p == nullptr || n < kBare) return DecodeStatus::kWrongLength;
+  ByteReader r(p, n);
+  if (r.be32() != static_cast<uint32_t>(Command::kConnect)) return DecodeStatus::kBadValue;
+  m = ConnectResponse{};
+  m.status = r.u8();
+  if (m.status == static_cast<uint8_t>(ConnectStatus::kBusy) && n >= kWithHolder) {
+    for (uint8_t& b : m.holder_ip) b = r.u8();
+    m.holder_port = r.be16();
+    m.has_holder = true;
+  }
+  return r.ok() ? DecodeStatus::kOk : DecodeStatus::kBadValue;
+}
+
 // SetJointLimit: the V2.0 manual appended auto_limit; the 116-byte form without it is accepted.
 Frame encodeFrame(uint32_t sequence, const SetJointLimitRequest& m) { return encode(sequence, m); }
 DecodeStatus decodePayload(const uint8_t* p, size_t n, SetJointLimitRequest& m) {

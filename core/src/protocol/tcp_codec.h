@@ -103,6 +103,16 @@ struct StartDragRequest {  // space 0 joint, 1 Cartesian; type 0 translation, 1 
 // Every response but two is {Command; uint8}: a status for setters, StartMove, StopMove, Connect and
 // AutomaticErrorRecovery, the state for GetMotorState and GetSafetyStopState.
 struct ByteResponse { Command command = Command::kInvalid; uint8_t value = 0; };
+// {Command; uint8 status}, 5 bytes. With status kBusy (simulator extension) 6 more bytes follow:
+// the IPv4 address (network byte order) and the TCP port (big-endian) of the client that holds the
+// session -- 11 bytes.
+struct ConnectResponse {
+  static constexpr Command kCommand = Command::kConnect;
+  uint8_t status = 0;
+  bool has_holder = false;
+  std::array<uint8_t, 4> holder_ip{};
+  uint16_t holder_port = 0;
+};
 struct GetDIStateResponse { static constexpr Command kCommand = Command::kGetDIState; uint8_t status = 0; bool state = false; };
 struct LoadRobotModelResponse {
   static constexpr Command kCommand = Command::kLoadRobotModel;
@@ -115,7 +125,9 @@ struct LoadRobotModelResponse {
 
 // Generic status values of setter responses.
 enum class SetterStatus : uint8_t { kSuccess = 0, kNotPossible = 1, kInvalidArgument = 2 };
-enum class ConnectStatus : uint8_t { kSuccess = 0, kIncompatibleLibraryVersion = 1 };
+// kBusy is a SIMULATOR EXTENSION (docs/protocol.md, "Connect"): rci-sim's session is held by
+// another client. A real controller answers only 0 or 1.
+enum class ConnectStatus : uint8_t { kSuccess = 0, kIncompatibleLibraryVersion = 1, kBusy = 2 };
 enum class StartMoveStatus : uint8_t {
   kSuccess, kMotionStarted, kPreempted, kNotPossible, kStartAtSingularPose, kInvalidArgument,
   kReflexAborted, kEmergencyAborted, kInputErrorAborted, kAborted
@@ -163,6 +175,7 @@ Frame encodeFrame(uint32_t sequence, const SetDORequest& m);
 Frame encodeFrame(uint32_t sequence, const GetDIStateRequest& m);
 Frame encodeFrame(uint32_t sequence, const StartDragRequest& m);
 Frame encodeFrame(uint32_t sequence, const ByteResponse& m);
+Frame encodeFrame(uint32_t sequence, const ConnectResponse& m);  // 5 bytes; 11 with has_holder
 Frame encodeFrame(uint32_t sequence, const GetDIStateResponse& m);
 Frame encodeFrame(uint32_t sequence, const LoadRobotModelResponse& m);
 
@@ -188,6 +201,9 @@ DecodeStatus decodePayload(const uint8_t* payload, size_t size, SetDORequest& m)
 DecodeStatus decodePayload(const uint8_t* payload, size_t size, GetDIStateRequest& m);
 DecodeStatus decodePayload(const uint8_t* payload, size_t size, StartDragRequest& m);
 DecodeStatus decodePayload(const uint8_t* payload, size_t size, ByteResponse& m);
+// Liberal, as a client must be: any payload of at least 5 bytes starting with the Connect code. The
+// holder is read when the status is kBusy and 6 more bytes follow; other trailing bytes are ignored.
+DecodeStatus decodePayload(const uint8_t* payload, size_t size, ConnectResponse& m);
 DecodeStatus decodePayload(const uint8_t* payload, size_t size, GetDIStateResponse& m);
 DecodeStatus decodePayload(const uint8_t* payload, size_t size, LoadRobotModelResponse& m);
 

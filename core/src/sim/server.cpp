@@ -131,6 +131,8 @@ void resetRunState(Server::Impl& s) {
   s.state_faults = StateFaults{};
   s.command_faults = CommandFaults{};
   s.counters = ServerCounters{};
+  s.clients_refused = 0;
+  s.sessions_dropped = 0;
   s.cycle_started = false;
   setClientText(s, "");
   std::lock_guard lock(s.snapshot_mutex);
@@ -272,6 +274,13 @@ void Server::followConfiguredLoad() {
   });
 }
 
+void Server::placeArm(const std::array<double, 7>& q) {
+  Impl& s = *impl_;
+  runOnCycleThread(s, [&] {
+    if (s.controller) s.controller->placeArm(q);  // validates
+  });
+}
+
 // ---- Packet faults --------------------------------------------------------------------------------
 
 namespace {
@@ -339,6 +348,8 @@ ServerStatus Server::status() const {
   st.last_refusal = s.last_refusal;
   st.pending = s.snapshot.pending;
   st.counters = s.snapshot.counters;
+  st.counters.clients_refused = s.clients_refused;
+  st.counters.sessions_dropped = s.sessions_dropped;
   st.sim = s.snapshot.sim;
   st.message_id = s.snapshot.state.message_id;
   st.awaiting_answer_to = s.snapshot.awaiting_answer_to;

@@ -29,6 +29,13 @@ struct ServerConfig {
   int lockstep_timeout_ms = 200;
   // After RebootRobot: no connection is accepted for this long, then a fresh controller answers.
   int reboot_pause_ms = 2000;
+  // A TCP connection must complete its Connect handshake within this long or it is closed, so that a
+  // connection that never sends a request cannot hold the only session. 0: no limit.
+  int connect_timeout_ms = 3000;
+  // A session whose client has sent no TCP request and no UDP datagram for this long, with no
+  // motion or hand guiding running, is silent: it gives way to the next client that sends Connect
+  // (it is dropped and logged). Until then it keeps the controller. 0: sessions never give way.
+  int idle_timeout_ms = 10000;
   // Try SCHED_FIFO (at realtime_priority) + mlockall for the cycle thread; the outcome is in status().
   bool realtime = false;
   int realtime_priority = 80;
@@ -66,6 +73,8 @@ struct ServerCounters {
   uint64_t commands_delayed = 0;     // held back by the delay fault
   uint64_t sessions = 0;             // successful Connect handshakes
   uint64_t reboots = 0;
+  uint64_t clients_refused = 0;      // told "busy" (or closed) because another client held the session
+  uint64_t sessions_dropped = 0;     // closed without Connect in time, or silent and taken over
 };
 
 struct ServerStatus {
@@ -120,6 +129,9 @@ class Server {
   // row-major), whatever setLoad told the controller; followConfiguredLoad() undoes it.
   void setActualPayload(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia);
   void followConfiguredLoad();
+  // Puts the arm at q (rad), at rest (Controller::placeArm: also beyond the limits, for tests of
+  // recovery). Unlike the scene, a reboot does not keep it: the fresh controller starts at initial_q.
+  void placeArm(const std::array<double, 7>& q);
 
   // ---- Packet faults (counted in datagrams from the next cycle on) -------------------------------
   void dropStates(int count);

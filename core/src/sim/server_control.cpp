@@ -263,7 +263,8 @@ std::string formatStatus(const ServerStatus& st) {
     << " commands_used=" << c.commands_used << " commands_stale=" << c.commands_stale
     << " commands_malformed=" << c.commands_malformed << " commands_lost=" << c.commands_lost
     << " commands_dropped=" << c.commands_dropped << " commands_delayed=" << c.commands_delayed
-    << " sessions=" << c.sessions << " reboots=" << c.reboots << " pending_drop_states=" << p.drop_states
+    << " sessions=" << c.sessions << " reboots=" << c.reboots << " clients_refused=" << c.clients_refused
+    << " sessions_dropped=" << c.sessions_dropped << " pending_drop_states=" << p.drop_states
     << " pending_drop_commands=" << p.drop_commands << " pending_delay_commands=" << p.delay_commands
     << " pending_reorder_states=" << p.reorder_states << " pending_corrupt_states=" << p.corrupt_states
     << " pending_badlength_states=" << p.wrong_length_states;

@@ -82,6 +82,7 @@ void releaseDueDelayedCommands(Server::Impl& s, AnswerSlot& slot, int64_t now) {
 }
 
 void receiveDatagram(Server::Impl& s, AnswerSlot& slot, const uint8_t* data, long size, int64_t now) {
+  s.last_client_datagram_ns.store(now, std::memory_order_relaxed);  // a sign of life (the TCP thread's idle rule)
   RobotCommand command;
   if (protocol::decodeRobotCommand(data, size_t(size), command) != protocol::DecodeStatus::kOk) {
     ++s.counters.commands_malformed;

@@ -90,6 +90,9 @@ struct Server::Impl {
   std::atomic<bool> rebooting{false};
   std::atomic<uint64_t> reboots_begun{0};  // the TCP thread drops its session when this changes
   std::atomic<bool> session_open{false};
+  std::atomic<int64_t> last_client_datagram_ns{0};  // cycle thread: the last UDP datagram that arrived
+  std::atomic<uint64_t> clients_refused{0};         // TCP thread (ServerCounters::clients_refused)
+  std::atomic<uint64_t> sessions_dropped{0};        // TCP thread (ServerCounters::sessions_dropped)
   mutable std::mutex snapshot_mutex;
   Snapshot snapshot;
   std::string client_text;                 // guarded by snapshot_mutex
