@@ -2,9 +2,7 @@
 // style, icon, settings names), shows the main window and connects to the target.
 #include <QApplication>
 #include <QDir>
-#include <QIcon>
 #include <QSettings>
-#include <QStyleFactory>
 
 #include <cstdio>
 
@@ -16,17 +14,13 @@
 
 namespace {
 
-void setUpApplication(QApplication& app) {
+void setUpApplication() {
   QApplication::setOrganizationName(QStringLiteral("RCI Studio"));
   QApplication::setApplicationName(QStringLiteral("rci-studio"));
   QApplication::setApplicationDisplayName(QStringLiteral("RCI Studio"));
   QApplication::setApplicationVersion(QStringLiteral(RCI_VERSION));
   QGuiApplication::setDesktopFileName(QStringLiteral("rci-studio"));
-  QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
-  QApplication::setWindowIcon(rci::ui::applicationIcon());
-  QFont font = app.font();
-  if (font.pointSizeF() < 9.5) font.setPointSizeF(9.5);
-  app.setFont(font);
+  rci::ui::applyStudioStyle();
 }
 
 // Screenshots use a fresh, throw-away settings store: the default layout, not the user's.
@@ -58,7 +52,7 @@ int main(int argc, char** argv) {
   }
 
   QApplication app(argc, argv);
-  setUpApplication(app);
+  setUpApplication();
   const QString temporary_settings = options.screenshot.isEmpty() ? QString() : useTemporarySettings();
 
   // Without --model, the simulator simulates the model last used (xMate7 Pro the first time).

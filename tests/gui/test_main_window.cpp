@@ -69,7 +69,6 @@ class TestMainWindow : public QObject {
  private slots:
   void initTestCase();
   void cleanupTestCase();
-  void defaultDockSizes();
   void startsAndConnects();
   void powerOnShowsInStatusBar();
   void digitalOutputLoopsBack();
@@ -106,23 +105,6 @@ void TestMainWindow::connectSimulator() {
   QTRY_VERIFY_WITH_TIMEOUT(session_->isOpen() || failed.count() > 0, kWaitMs);
   QVERIFY2(session_->isOpen(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
   QTRY_VERIFY_WITH_TIMEOUT(session_->live().has_state, kWaitMs);
-}
-
-// Without a saved layout, the side docks get room for their panels and the plots 40 % of the height.
-void TestMainWindow::defaultDockSizes() {
-  QDockWidget* left = nullptr;
-  QDockWidget* right = nullptr;
-  for (QDockWidget* dock : window_->docks()) {
-    // Tabbed docks behind the current one are parked outside the window.
-    if (dock->isHidden() || !window_->rect().contains(dock->geometry().center())) continue;
-    if (window_->dockWidgetArea(dock) == Qt::LeftDockWidgetArea) left = dock;
-    if (window_->dockWidgetArea(dock) == Qt::RightDockWidgetArea) right = dock;
-  }
-  QVERIFY(left != nullptr && right != nullptr);
-  QTRY_VERIFY2_WITH_TIMEOUT(left->width() >= 550, qPrintable(QString::number(left->width())), kWaitMs);
-  QVERIFY2(right->width() >= 370 && right->width() <= 0.4 * window_->width() + 10, qPrintable(QString::number(right->width())));
-  const double share = double(find<QDockWidget>("dock.plots")->height()) / window_->height();
-  QVERIFY2(share > 0.33 && share < 0.45, qPrintable(QString::number(share)));
 }
 
 void TestMainWindow::startsAndConnects() {

@@ -1,5 +1,8 @@
-// The panels' shared editor pieces: number fields, refusal marks, the inline message line.
+// The panels' shared editor pieces: number fields, refusal marks, compact sizes, the inline message line.
 #include "panels/fields.h"
+
+#include <QAbstractButton>
+#include <QComboBox>
 
 #include <cctype>
 
@@ -18,6 +21,16 @@ QDoubleSpinBox* makeNumberField(const QString& name, double min, double max, int
   field->setAlignment(Qt::AlignRight);
   field->setMinimumWidth(90);
   return field;
+}
+
+void compactButton(QAbstractButton* button) {
+  const int padding = 2 * button->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+  button->setMinimumWidth(button->fontMetrics().horizontalAdvance(button->text()) + padding);
+}
+
+void compactCombo(QComboBox* combo, int min_chars) {
+  combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  combo->setMinimumContentsLength(min_chars);
 }
 
 void markInvalid(QWidget* field, bool invalid) {

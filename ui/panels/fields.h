@@ -1,5 +1,6 @@
 // Small building blocks shared by the panels' editors: number fields with units and tooltips,
-// the inline message line that says why a value was refused, and the red mark on a refused field.
+// the inline message line that says why a value was refused, the red mark on a refused field, and
+// the compact sizes that let rows of buttons and combo boxes fit a narrow dock.
 #pragma once
 
 #include <QDoubleSpinBox>
@@ -9,11 +10,20 @@
 
 #include <string>
 
+class QAbstractButton;
+class QComboBox;
+
 namespace rci::ui {
 
 // A number field named name (the objectName tests find it by), range [min, max], unit as suffix.
 QDoubleSpinBox* makeNumberField(const QString& name, double min, double max, int decimals, const QString& unit,
                                 const QString& tooltip, QWidget* parent);
+
+// Lets a button in a row of several shrink to its text (the style asks at least 80 px otherwise).
+void compactButton(QAbstractButton* button);
+// Lets a combo box with long entries shrink to about min_chars characters; its list still shows
+// the entries in full.
+void compactCombo(QComboBox* combo, int min_chars);
 
 // Marks a field as refused (red frame) or clears the mark.
 void markInvalid(QWidget* field, bool invalid);

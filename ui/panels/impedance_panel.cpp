@@ -30,7 +30,7 @@ ImpedancePanel::ImpedancePanel(Session& session, QWidget* parent)
                                {QStringLiteral("N/m"), QStringLiteral("N/m"), QStringLiteral("N/m"),
                                 QStringLiteral("Nm/rad"), QStringLiteral("Nm/rad"), QStringLiteral("Nm/rad")},
                                tr("Send the Cartesian stiffness to the robot")));
-  body()->addWidget(makeEditor(wrench_, tr("Desired wrench (Cartesian impedance, force-control frame)"),
+  body()->addWidget(makeEditor(wrench_, tr("Desired wrench (force-control frame)"),
                                QStringLiteral("impedance.wrench"), wrench, -1000, 1000,
                                {QStringLiteral("N"), QStringLiteral("N"), QStringLiteral("N"), QStringLiteral("Nm"),
                                 QStringLiteral("Nm"), QStringLiteral("Nm")},

@@ -1,6 +1,7 @@
 // createPanels (window/parts.h): builds every dock panel for a session and says where it docks:
 // operation (power, jog, drag, IO, safety, simulator) on the right; the Program panel (teach and
-// replay, the operator's main tool) first on the left, then the settings editors.
+// replay, the operator's main tool, which keeps its Run bar in view and scrolls the rest itself)
+// first on the left, then the settings editors.
 #include "window/parts.h"
 
 #include "panels/collision_panel.h"
@@ -21,8 +22,8 @@ namespace rci::ui {
 
 std::vector<PanelSpec> createPanels(Session& session, QWidget* parent) {
   std::vector<PanelSpec> panels;
-  auto add = [&panels](PanelBase* panel, Qt::DockWidgetArea area) {
-    panels.push_back({panel->objectName(), panel->title(), panel, area});
+  auto add = [&panels](PanelBase* panel, Qt::DockWidgetArea area, bool scrolls_itself = false) {
+    panels.push_back({panel->objectName(), panel->title(), panel, area, scrolls_itself});
   };
   add(new PowerPanel(session, parent), Qt::RightDockWidgetArea);
   add(new JogPanel(session, parent), Qt::RightDockWidgetArea);
@@ -30,7 +31,7 @@ std::vector<PanelSpec> createPanels(Session& session, QWidget* parent) {
   add(new IoPanel(session, parent), Qt::RightDockWidgetArea);
   add(new SafetyPanel(session, parent), Qt::RightDockWidgetArea);
   add(new SimulatorPanel(session, parent), Qt::RightDockWidgetArea);
-  add(new ProgramPanel(session, parent), Qt::LeftDockWidgetArea);
+  add(new ProgramPanel(session, parent), Qt::LeftDockWidgetArea, true);
   add(new CollisionPanel(session, parent), Qt::LeftDockWidgetArea);
   add(new SafetyBoxPanel(session, parent), Qt::LeftDockWidgetArea);
   add(new SoftLimitsPanel(session, parent), Qt::LeftDockWidgetArea);

@@ -18,6 +18,7 @@
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStyledItemDelegate>
@@ -93,9 +94,9 @@ ProgramPanel::ProgramPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("program"), tr("Program"), parent) {
   model_ = new ProgramModel(this);
   body()->addWidget(buildFileRow());
-  body()->addWidget(buildTeachGroup());
-  body()->addWidget(buildListGroup(), 1);
   body()->addWidget(buildRunGroup());
+  body()->addWidget(buildEditorArea(), 1);
+  letBodyFill();
   setDialogs({});
   attachShortcut();
 
@@ -114,6 +115,28 @@ ProgramPanel::~ProgramPanel() {
   if (running_) run_slot_->executor.stop();
 }
 
+// The editor area takes the panel's spare height (PanelBase gives it to a stretch below the body).
+void ProgramPanel::letBodyFill() {
+  auto* outer = qobject_cast<QBoxLayout*>(layout());
+  if (!outer) return;
+  for (int i = 0; i < outer->count(); ++i) outer->setStretch(i, outer->itemAt(i)->layout() == body() ? 1 : 0);
+}
+
+// Teach and the instruction list, scrolling vertically under the Run bar; the list grows with the panel.
+QWidget* ProgramPanel::buildEditorArea() {
+  auto* area = new QScrollArea(this);
+  area->setObjectName(QStringLiteral("program.scroll"));
+  area->setWidgetResizable(true);
+  area->setFrameShape(QFrame::NoFrame);
+  auto* content = new QWidget(area);
+  auto* layout = new QVBoxLayout(content);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(buildTeachGroup());
+  layout->addWidget(buildListGroup(), 1);
+  area->setWidget(content);
+  return area;
+}
+
 QWidget* ProgramPanel::buildFileRow() {
   auto* box = new QWidget(this);
   auto* row = new QHBoxLayout(box);
@@ -124,12 +147,17 @@ QWidget* ProgramPanel::buildFileRow() {
   QFont bold = file_label_->font();
   bold.setBold(true);
   file_label_->setFont(bold);
+  file_label_->setMinimumWidth(60);  // a long file name is cut, not widening the panel (full path in the tooltip)
   auto* new_button = makeButton(QStringLiteral("program.new"), tr("New"), tr("Start an empty program"), box);
   auto* open = makeButton(QStringLiteral("program.open"), tr("Open…"), tr("Open a program file (JSON)"), box);
   auto* save = makeButton(QStringLiteral("program.save"), tr("Save"), tr("Save the program to its file (asks for a name the first time)"), box);
   auto* save_as = makeButton(QStringLiteral("program.saveAs"), tr("Save as…"), tr("Save the program under a new name"), box);
   row->addWidget(file_label_, 1);
-  for (auto* b : {new_button, open, save, save_as}) row->addWidget(b);
+  for (auto* b : {new_button, open, save, save_as}) {
+    compactButton(b);
+    b->setFixedWidth(b->minimumWidth());  // the file name gets the rest of the row
+    row->addWidget(b);
+  }
   connect(new_button, &QPushButton::clicked, this, &ProgramPanel::newClicked);
   connect(open, &QPushButton::clicked, this, &ProgramPanel::openClicked);
   connect(save, &QPushButton::clicked, this, &ProgramPanel::saveClicked);
@@ -146,6 +174,7 @@ QWidget* ProgramPanel::buildTeachGroup() {
   record_type_->addItem(tr("L — straight line (MOVEL)"), kRecordL);
   record_type_->addItem(tr("C — arc (MOVEC): via, then target"), kRecordC);
   record_type_->setToolTip(tr("How the robot will move to the recorded waypoint"));
+  compactCombo(record_type_, 14);
   record_speed_ = new QSpinBox(group);
   record_speed_->setObjectName(QStringLiteral("program.recordSpeed"));
   record_speed_->setRange(1, 100);
@@ -167,14 +196,15 @@ QWidget* ProgramPanel::buildTeachGroup() {
   record_state_->setObjectName(QStringLiteral("program.recordState"));
   record_state_->setWordWrap(true);
   grid->addWidget(new QLabel(tr("Move type"), group), 0, 0);
-  grid->addWidget(record_type_, 0, 1);
-  grid->addWidget(new QLabel(tr("Speed"), group), 0, 2);
-  grid->addWidget(record_speed_, 0, 3);
-  grid->addWidget(new QLabel(tr("DI trigger"), group), 1, 0);
-  grid->addWidget(di_trigger_, 1, 1);
-  grid->addWidget(record_, 1, 2, 1, 2);
-  grid->addWidget(record_state_, 2, 0, 1, 4);
+  grid->addWidget(record_type_, 0, 1, 1, 3);
+  grid->addWidget(new QLabel(tr("Speed"), group), 1, 0);
+  grid->addWidget(record_speed_, 1, 1);
+  grid->addWidget(new QLabel(tr("DI trigger"), group), 1, 2, Qt::AlignRight);
+  grid->addWidget(di_trigger_, 1, 3);
+  grid->addWidget(record_, 2, 0, 1, 4);
+  grid->addWidget(record_state_, 3, 0, 1, 4);
   grid->setColumnStretch(1, 1);
+  grid->setColumnStretch(3, 1);
 
   record_action_ = new QAction(tr("Record waypoint"), this);
   record_action_->setObjectName(QStringLiteral("program.recordAction"));
@@ -203,18 +233,41 @@ QWidget* ProgramPanel::buildListGroup() {
   list_->setDropIndicatorShown(true);
   list_->setDragDropMode(QAbstractItemView::InternalMove);
   list_->setDefaultDropAction(Qt::MoveAction);
-
   list_->verticalHeader()->hide();
-  list_->horizontalHeader()->setStretchLastSection(true);
-  for (int column : {ProgramModel::kIndex, ProgramModel::kType, ProgramModel::kSpeed})
-    list_->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
   list_->setItemDelegateForColumn(ProgramModel::kType, new TypeDelegate(list_));
   list_->setItemDelegateForColumn(ProgramModel::kSpeed, new SpeedDelegate(list_));
-  list_->setMinimumHeight(200);
+  sizeListColumns();
+  list_->setMinimumHeight(140);
   list_->setToolTip(tr("Double-click Type, Name or Speed to edit; drag rows to reorder"));
   layout->addWidget(list_, 1);
+  layout->addLayout(buildEditRows(group));
+  layout->addLayout(buildLogicEditor(group));
+  return group;
+}
 
-  auto* edit_row = new QHBoxLayout;
+// Fixed widths from the font for the short columns, so "WAIT_DI" and "100" always show in full;
+// the details take the rest.
+void ProgramPanel::sizeListColumns() {
+  QHeaderView* header = list_->horizontalHeader();
+  const QFontMetrics metrics = list_->fontMetrics();
+  const int padding = metrics.horizontalAdvance(QLatin1Char('M')) + 4;  // cell and header margins
+  auto fixed = [&](int column, const QString& widest) {
+    const QString title = model_->headerData(column, Qt::Horizontal, Qt::DisplayRole).toString();
+    const int text = std::max(metrics.horizontalAdvance(widest), header->fontMetrics().horizontalAdvance(title));
+    header->setSectionResizeMode(column, QHeaderView::Fixed);
+    header->resizeSection(column, text + padding);
+  };
+  fixed(ProgramModel::kIndex, QStringLiteral("000"));
+  fixed(ProgramModel::kType, QStringLiteral("WAIT_DI"));
+  fixed(ProgramModel::kSpeed, QStringLiteral("100"));
+  header->setSectionResizeMode(ProgramModel::kName, QHeaderView::Interactive);
+  header->resizeSection(ProgramModel::kName, metrics.horizontalAdvance(QStringLiteral("P0000")) + padding);
+  header->setStretchLastSection(true);
+  header->setHighlightSections(false);  // a bold title for the selected row's columns would no longer fit
+}
+
+// Two rows: reorder / copy / delete, then the moves that need the robot's pose.
+QLayout* ProgramPanel::buildEditRows(QWidget* group) {
   auto* up = makeButton(QStringLiteral("program.up"), tr("Up"), tr("Move the selected instruction up"), group);
   auto* down = makeButton(QStringLiteral("program.down"), tr("Down"), tr("Move the selected instruction down"), group);
   auto* dup = makeButton(QStringLiteral("program.duplicate"), tr("Duplicate"), tr("Copy the selected instruction"), group);
@@ -225,16 +278,19 @@ QWidget* ProgramPanel::buildListGroup() {
                           tr("Replace the selected MOVEC's via point with the robot's current pose"), group);
   auto* go = makeButton(QStringLiteral("program.goto"), tr("Go to"),
                         tr("Move to the selected waypoint with a joint move (MOVEJ) at no more than 20 % speed"), group);
+  auto* rows = new QGridLayout;
+  int column = 0;
   for (auto* b : {up, down, dup, del}) {
-    edit_row->addWidget(b);
+    compactButton(b);
+    rows->addWidget(b, 0, column++);
     edit_buttons_ << b;
   }
-  edit_row->addStretch(1);
-  edit_row->addWidget(touch);
-  edit_row->addWidget(touch_via_);
-  edit_row->addWidget(go);
+  column = 0;
+  for (auto* b : {touch, touch_via_, go}) {
+    compactButton(b);
+    rows->addWidget(b, 1, column++);
+  }
   live_buttons_ << touch << go;
-  layout->addLayout(edit_row);
   connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
   connect(down, &QPushButton::clicked, this, [this] { moveSelected(+1); });
   connect(dup, &QPushButton::clicked, this, [this] {
@@ -248,8 +304,11 @@ QWidget* ProgramPanel::buildListGroup() {
   connect(touch, &QPushButton::clicked, this, [this] { touchUp(false); });
   connect(touch_via_, &QPushButton::clicked, this, [this] { touchUp(true); });
   connect(go, &QPushButton::clicked, this, &ProgramPanel::gotoClicked);
+  return rows;
+}
 
-  auto* logic = new QHBoxLayout;
+// WAIT / SET_DO / WAIT_DI: type, signal and level on one row, the time and Insert / Apply below.
+QLayout* ProgramPanel::buildLogicEditor(QWidget* group) {
   logic_type_ = new QComboBox(group);
   logic_type_->setObjectName(QStringLiteral("program.logicType"));
   logic_type_->addItem(QStringLiteral("WAIT"), int(InstructionType::kWait));
@@ -271,19 +330,22 @@ QWidget* ProgramPanel::buildListGroup() {
                          tr("Insert this instruction after the selected one"), group);
   apply_logic_ = makeButton(QStringLiteral("program.applyLogic"), tr("Apply"),
                             tr("Change the selected WAIT, SET_DO or WAIT_DI to these values"), group);
-  logic->addWidget(logic_type_);
-  logic->addWidget(logic_signal_, 1);
-  logic->addWidget(logic_value_);
-  logic->addWidget(logic_ms_label_);
-  logic->addWidget(logic_ms_);
-  logic->addWidget(add);
-  logic->addWidget(apply_logic_);
-  layout->addLayout(logic);
+  compactButton(add);
+  compactButton(apply_logic_);
+  auto* grid = new QGridLayout;
+  grid->addWidget(logic_type_, 0, 0);
+  grid->addWidget(logic_signal_, 0, 1);
+  grid->addWidget(logic_value_, 0, 2, 1, 2);
+  grid->addWidget(logic_ms_label_, 1, 0, Qt::AlignRight);
+  grid->addWidget(logic_ms_, 1, 1);
+  grid->addWidget(add, 1, 2);
+  grid->addWidget(apply_logic_, 1, 3);
+  grid->setColumnStretch(1, 1);
   logicTypeChanged();
   connect(logic_type_, &QComboBox::currentIndexChanged, this, &ProgramPanel::logicTypeChanged);
   connect(add, &QPushButton::clicked, this, &ProgramPanel::addLogic);
   connect(apply_logic_, &QPushButton::clicked, this, &ProgramPanel::applyLogic);
-  return group;
+  return grid;
 }
 
 QWidget* ProgramPanel::buildRunGroup() {
@@ -297,7 +359,10 @@ QWidget* ProgramPanel::buildRunGroup() {
   pause_ = makeButton(QStringLiteral("program.pause"), tr("Pause"), tr("Slow down smoothly and hold on the path"), group);
   resume_ = makeButton(QStringLiteral("program.resume"), tr("Resume"), tr("Continue the paused run to its end"), group);
   stop_ = makeButton(QStringLiteral("program.stop"), tr("Stop"), tr("Slow down smoothly and end the run"), group);
-  for (auto* b : {run_, step_, pause_, resume_, stop_}) buttons->addWidget(b);
+  for (auto* b : {run_, step_, pause_, resume_, stop_}) {
+    compactButton(b);
+    buttons->addWidget(b);
+  }
   layout->addLayout(buttons);
 
   auto* form = new QFormLayout;
@@ -309,7 +374,7 @@ QWidget* ProgramPanel::buildRunGroup() {
   speed_->setToolTip(tr("Speed override: scales every move of the run, 10 to 100 % (changes apply smoothly while running)"));
   speed_label_ = new QLabel(group);
   speed_label_->setObjectName(QStringLiteral("program.speedLabel"));
-  speed_label_->setMinimumWidth(48);
+  speed_label_->setMinimumWidth(speed_label_->fontMetrics().horizontalAdvance(QStringLiteral("100 %")) + 4);
   speed_label_->setText(QStringLiteral("%1 %").arg(speed_->value()));
   speed_row->addWidget(speed_, 1);
   speed_row->addWidget(speed_label_);
@@ -327,12 +392,18 @@ QWidget* ProgramPanel::buildRunGroup() {
   form->addRow(tr("State"), run_state_);
   layout->addLayout(form);
 
-  layout->addWidget(new QLabel(tr("Pre-flight problems (nothing moves while there are any):"), group));
+  // The pre-flight problems show here, under Run, while there are any.
+  problems_label_ = new QLabel(tr("Pre-flight problems (nothing moves while there are any):"), group);
+  problems_label_->setWordWrap(true);
+  layout->addWidget(problems_label_);
   problems_ = new QListWidget(group);
   problems_->setObjectName(QStringLiteral("program.problems"));
   problems_->setToolTip(tr("Double-click a problem to select its instruction"));
-  problems_->setMaximumHeight(110);
+  problems_->setMaximumHeight(problems_->fontMetrics().lineSpacing() * 4 + 8);
+  problems_->setWordWrap(true);
   layout->addWidget(problems_);
+  problems_label_->hide();
+  problems_->hide();
 
   connect(run_, &QPushButton::clicked, this, &ProgramPanel::runClicked);
   connect(step_, &QPushButton::clicked, this, &ProgramPanel::stepClicked);

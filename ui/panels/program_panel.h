@@ -70,11 +70,17 @@ class ProgramPanel : public PanelBase {
   bool event(QEvent* event) override;
 
  private:
-  // Layout (program_panel.cpp).
+  // Layout (program_panel.cpp): the file row and the Run bar stay in view; Teach and the
+  // instruction list scroll below them (the window does not wrap this panel in a scroll area).
   QWidget* buildFileRow();
   QWidget* buildTeachGroup();
   QWidget* buildListGroup();
+  QLayout* buildEditRows(QWidget* group);
+  QLayout* buildLogicEditor(QWidget* group);
+  void sizeListColumns();
   QWidget* buildRunGroup();
+  QWidget* buildEditorArea();
+  void letBodyFill();
   void attachShortcut();
 
   // Teaching and editing (program_panel.cpp).
@@ -162,6 +168,7 @@ class ProgramPanel : public PanelBase {
   QProgressBar* progress_ = nullptr;
   QLabel* run_state_ = nullptr;
   QListWidget* problems_ = nullptr;
+  QLabel* problems_label_ = nullptr;
 
   // The executor and the result of its run are shared with the motion worker's job, so they outlive
   // the panel if it is destroyed mid-run.

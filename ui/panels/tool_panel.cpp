@@ -105,13 +105,13 @@ QGroupBox* ToolPanel::makePayloadGroup() {
     field->setSingleStep(0.0001);
     field->setMinimumWidth(125);
     const QString label = QLatin1Char('I') + QLatin1String(inertia[i] + 1);
-    grid->addWidget(new QLabel(label, group),
-                    i % 3 + 1, 2 + 2 * (i / 3));
-    grid->addWidget(field, i % 3 + 1, 3 + 2 * (i / 3));
+    // Two columns, so the group fits a narrow dock: mass and centre on the left, the inertia on the right.
+    grid->addWidget(new QLabel(label, group), i, 2);
+    grid->addWidget(field, i, 3);
     inertia_.append(field);
   }
   payload_message_ = new MessageLine(QStringLiteral("payload.message"), group);
-  grid->addWidget(payload_message_, 4, 0, 1, 6);
+  grid->addWidget(payload_message_, 6, 0, 1, 4);
   auto* apply = new QPushButton(tr("Apply"), group);
   apply->setObjectName(QStringLiteral("payload.apply"));
   apply->setToolTip(tr("Send the payload to the robot; a wrong payload shows up as external torque"));
@@ -120,7 +120,7 @@ QGroupBox* ToolPanel::makePayloadGroup() {
   auto* row = new QHBoxLayout;
   row->addStretch(1);
   row->addWidget(apply);
-  grid->addLayout(row, 5, 0, 1, 6);
+  grid->addLayout(row, 7, 0, 1, 4);
   return group;
 }
 

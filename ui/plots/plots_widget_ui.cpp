@@ -116,12 +116,14 @@ void PlotsWidget::buildUi() {
   controls->addWidget(buildSignalChooser());
   controls->addWidget(separator(this));
   controls->addWidget(buildViewControls());
-  controls->addStretch(1);
   status_ = new QLabel(this);
+  // Right-aligned in the room left; on two lines where the window is narrow, rather than widening the strip.
+  status_->setWordWrap(true);
+  status_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
   status_->setToolTip(tr("Session time of the newest sample shown (the right edge of the charts, 0 s on the "
                           "time axis), and the recorded time held in memory (the most recent %1 s are kept)")
                            .arg(kMaxWindowSeconds));
-  controls->addWidget(status_);
+  controls->addWidget(status_, 1);
 
   auto* splitter = new QSplitter(Qt::Vertical, this);
   splitter->setChildrenCollapsible(false);

@@ -6,10 +6,14 @@
 #include <QDockWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProxyStyle>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyleFactory>
+#include <QStyleOptionDockWidget>
 #include <QTabBar>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -24,6 +28,8 @@
 #include "window/parts.h"
 #include "window/status_strip.h"
 #include "window/target_settings.h"
+#include "window/wheel_guard.h"
+#include "window/window_geometry.h"
 
 // The window's resources live in the static rci_ui library: register them once, explicitly.
 static void initWindowResources() {
@@ -38,13 +44,28 @@ namespace rci::ui {
 namespace {
 
 constexpr int kLayoutVersion = 1;
-// Default dock sizes: the panels need room for their forms; the plots take this share of the height.
-constexpr int kLeftDockWidth = 560;
-constexpr int kRightDockWidth = 380;
 constexpr double kSideDockMaxShare = 0.4;  // a side dock widens for its panel up to this share of the width
-constexpr double kPlotsHeightShare = 0.4;
+constexpr double kMinimumFontPoints = 9.5;
 
 QSettings windowSettings() { return QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")); }
+
+// Dock titles carry "&&" for a '&' (dock tabs and the View menu read '&' as a mnemonic marker), but
+// the dock's own title bar draws its title as plain text: draw "&&" there as the '&' it stands for.
+class DockTitleStyle : public QProxyStyle {
+ public:
+  using QProxyStyle::QProxyStyle;
+  void drawControl(ControlElement element, const QStyleOption* option, QPainter* painter,
+                   const QWidget* widget) const override {
+    const auto* dock = qstyleoption_cast<const QStyleOptionDockWidget*>(option);
+    if (element != CE_DockWidgetTitle || !dock || !dock->title.contains(QLatin1String("&&"))) {
+      QProxyStyle::drawControl(element, option, painter, widget);
+      return;
+    }
+    QStyleOptionDockWidget plain(*dock);
+    plain.title.replace(QLatin1String("&&"), QLatin1String("&"));
+    QProxyStyle::drawControl(element, &plain, painter, widget);
+  }
+};
 
 // Panels and plots scroll inside their dock, so a tall one never forces the window taller than the screen.
 QWidget* scrollable(QWidget* panel) {
@@ -68,8 +89,17 @@ QIcon applicationIcon() {
   return icon;
 }
 
+void applyStudioStyle() {
+  QApplication::setStyle(new DockTitleStyle(QStyleFactory::create(QStringLiteral("Fusion"))));
+  QApplication::setWindowIcon(applicationIcon());
+  QFont font = QApplication::font();
+  if (font.pointSizeF() < kMinimumFontPoints) font.setPointSizeF(kMinimumFontPoints);
+  QApplication::setFont(font);
+}
+
 MainWindow::MainWindow(Session& session, QWidget* parent) : QMainWindow(parent), session_(session) {
   initWindowResources();
+  installWheelGuard();
   setObjectName(QStringLiteral("mainWindow"));
   setWindowIcon(applicationIcon());
   setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
@@ -89,9 +119,8 @@ MainWindow::MainWindow(Session& session, QWidget* parent) : QMainWindow(parent),
   buildMenus();
   connectSession();
 
-  resize(1600, 1000);
   default_state_ = saveState(kLayoutVersion);
-  restoreLayout();
+  placeOnScreen(screen());
   if (std::optional<SessionTarget> last = lastTarget()) bar_->setTarget(*last);
   if (std::optional<QString> ini = robotFromIni()) {
     bar_->setRobotAddress(*ini);
@@ -138,7 +167,8 @@ void MainWindow::buildDocks() {
   std::map<Qt::DockWidgetArea, QDockWidget*> first;
   first[Qt::BottomDockWidgetArea] = plots;
   for (const PanelSpec& spec : createPanels(session_, this)) {
-    QDockWidget* dock = addDock(spec.id, spec.title, scrollable(spec.widget), spec.area);
+    QWidget* content = spec.scrolls_itself ? spec.widget : scrollable(spec.widget);
+    QDockWidget* dock = addDock(spec.id, spec.title, content, spec.area);
     auto [it, inserted] = first.emplace(spec.area, dock);
     if (!inserted) tabifyDockWidget(it->second, dock);
   }
@@ -172,6 +202,10 @@ int MainWindow::sideTabBarWidth(Qt::DockWidgetArea area) const {
   return width;
 }
 
+int MainWindow::chromeHeight() const {
+  return menuBar()->sizeHint().height() + bar_->sizeHint().height() + statusBar()->sizeHint().height();
+}
+
 void MainWindow::applyDefaultDockSizes() {
   // One dock per area is enough: tabbed docks share their area's size.
   QList<QDockWidget*> widths, heights;
@@ -183,15 +217,15 @@ void MainWindow::applyDefaultDockSizes() {
     if (area == Qt::LeftDockWidgetArea && !left) {
       left = true;
       widths << dock;
-      width_sizes << sideDockWidth(dock, kLeftDockWidth);
+      width_sizes << sideDockWidth(dock, defaultLeftDockWidth(width()));
     } else if (area == Qt::RightDockWidgetArea && !right) {
       right = true;
       widths << dock;
-      width_sizes << sideDockWidth(dock, kRightDockWidth);
+      width_sizes << sideDockWidth(dock, defaultRightDockWidth(width()));
     } else if (area == Qt::BottomDockWidgetArea && !bottom) {
       bottom = true;
       heights << dock;
-      height_sizes << static_cast<int>(height() * kPlotsHeightShare);
+      height_sizes << defaultPlotsHeight(height(), chromeHeight());
     }
   }
   if (!widths.isEmpty()) resizeDocks(widths, width_sizes, Qt::Horizontal);
@@ -286,18 +320,53 @@ void MainWindow::updateTitle() {
   setWindowTitle(title);
 }
 
-void MainWindow::restoreLayout() {
+void MainWindow::placeOnScreen(QScreen* screen) {
+  if (!screen) screen = QGuiApplication::primaryScreen();
+  setScreen(screen);
+  const QRect available = screen->availableGeometry();
+  const QString group = screenSizeGroup(available.size());
+  if (!restoreGeometryFor(group, available)) {
+    const WindowPlacement placement = defaultPlacement(available);
+    setGeometry(placement.geometry);
+    maximize_on_show_ = placement.maximized;
+  }
+  restoreDockLayout(group);
+}
+
+// The saved frame must lie within the available area; a maximized window keeps its normal
+// geometry only if that fits too.
+bool MainWindow::restoreGeometryFor(const QString& group, const QRect& available) {
   QSettings s = windowSettings();
-  const QByteArray geometry = s.value(QStringLiteral("window/geometry")).toByteArray();
-  if (!geometry.isEmpty()) restoreGeometry(geometry);
-  const QByteArray state = s.value(QStringLiteral("window/state")).toByteArray();
-  if (!state.isEmpty()) layout_restored_ = restoreState(state, kLayoutVersion);
+  s.beginGroup(group);
+  const QRect normal = s.value(QStringLiteral("geometry")).toRect();
+  const QRect frame = s.value(QStringLiteral("frame")).toRect();
+  const bool maximized = s.value(QStringLiteral("maximized"), false).toBool();
+  if (!maximized && !(fitsAvailable(frame, available) && fitsAvailable(normal, available))) return false;
+  setGeometry(fitsAvailable(normal, available) ? normal : available);
+  maximize_on_show_ = maximized;
+  return true;
+}
+
+// The layout saved on a screen of this size, sizes and all; else the last one saved anywhere for
+// which docks are shown and tabbed, with default sizes for this screen.
+void MainWindow::restoreDockLayout(const QString& group) {
+  QSettings s = windowSettings();
+  const QByteArray sized = s.value(group + QStringLiteral("/state")).toByteArray();
+  layout_restored_ = !sized.isEmpty() && restoreState(sized, kLayoutVersion);
+  if (layout_restored_) return;
+  const QByteArray last = s.value(QStringLiteral("window/state")).toByteArray();
+  restoreState(last.isEmpty() ? default_state_ : last, kLayoutVersion);
 }
 
 void MainWindow::saveLayout() {
   QSettings s = windowSettings();
-  s.setValue(QStringLiteral("window/geometry"), saveGeometry());
-  s.setValue(QStringLiteral("window/state"), saveState(kLayoutVersion));
+  const QByteArray state = saveState(kLayoutVersion);
+  s.setValue(QStringLiteral("window/state"), state);
+  s.beginGroup(screenSizeGroup(screen()->availableGeometry().size()));
+  s.setValue(QStringLiteral("geometry"), normalGeometry());
+  s.setValue(QStringLiteral("frame"), frameGeometry());
+  s.setValue(QStringLiteral("maximized"), isMaximized());
+  s.setValue(QStringLiteral("state"), state);
 }
 
 void MainWindow::resetLayout() {
@@ -313,6 +382,14 @@ void MainWindow::showFullTabNames() {
     tabs->setElideMode(Qt::ElideNone);
     tabs->setUsesScrollButtons(true);
   }
+}
+
+void MainWindow::setVisible(bool visible) {
+  if (visible && maximize_on_show_) {
+    maximize_on_show_ = false;
+    setWindowState(windowState() | Qt::WindowMaximized);
+  }
+  QMainWindow::setVisible(visible);
 }
 
 void MainWindow::showEvent(QShowEvent* event) {

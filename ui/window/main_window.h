@@ -1,6 +1,7 @@
 // MainWindow: "RCI Studio" -- the 3D view in the centre, live plots and messages at the bottom,
-// the panels in tabbed docks, the connection toolbar, the status bar. Persists its layout and last
-// target (QSettings "RCI Studio"/"rci-studio"). The Session is owned by the caller and outlives it.
+// the panels in tabbed docks, the connection toolbar, the status bar. Opens within the screen's
+// available area and persists its geometry per screen size, its dock layout and last target
+// (QSettings "RCI Studio"/"rci-studio"). The Session is owned by the caller and outlives it.
 #pragma once
 
 #include <QIcon>
@@ -11,6 +12,7 @@
 #include "session/session.h"
 
 class QDockWidget;
+class QScreen;
 
 namespace rci::ui {
 
@@ -22,6 +24,10 @@ class StatusStrip;
 // The RCI Studio icon (PNG sizes and the SVG), from the window's Qt resources.
 QIcon applicationIcon();
 
+// The application's look: Fusion style, the icon, a font of at least 9.5 pt (the program and the
+// layout tests use the same, so the tests measure what the operator sees).
+void applyStudioStyle();
+
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:
@@ -31,6 +37,11 @@ class MainWindow : public QMainWindow {
   void connectTo(const SessionTarget& target);
   void disconnectFromTarget();
 
+  // Opens on screen (before show): the geometry remembered for its available size if that still
+  // fits, else the default placement (window_geometry.h); with it the dock layout saved there.
+  // The constructor places the window on its default screen.
+  void placeOnScreen(QScreen* screen);
+
   Session& session() { return session_; }
   QWidget* robotView() const { return view_; }
   MessageLog* messageLog() const { return log_; }
@@ -39,6 +50,7 @@ class MainWindow : public QMainWindow {
   const std::vector<QDockWidget*>& docks() const { return docks_; }
 
  protected:
+  void setVisible(bool visible) override;
   void closeEvent(QCloseEvent* event) override;
   void showEvent(QShowEvent* event) override;
 
@@ -48,12 +60,15 @@ class MainWindow : public QMainWindow {
   void buildDocks();
   void buildMenus();
   void connectSession();
-  void restoreLayout();
+  // Geometry remembered for the available area available (its settings group): true if restored.
+  bool restoreGeometryFor(const QString& group, const QRect& available);
+  void restoreDockLayout(const QString& group);
   void saveLayout();
   void resetLayout();
   // Gives the docks their default sizes (left panels, right panels, plots) for the current window size.
   void applyDefaultDockSizes();
   int sideDockWidth(QDockWidget* dock, int preferred) const;
+  int chromeHeight() const;  // menu bar, toolbar and status bar
   int sideTabBarWidth(Qt::DockWidgetArea area) const;
   void updateTitle();
   void showFullTabNames();
@@ -68,6 +83,7 @@ class MainWindow : public QMainWindow {
   QByteArray default_state_;
   bool layout_restored_ = false;  // a saved layout was restored: keep its dock sizes
   bool shown_once_ = false;
+  bool maximize_on_show_ = false;  // placed maximized: applied when shown (it creates the native window)
 };
 
 }  // namespace rci::ui

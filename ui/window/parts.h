@@ -23,12 +23,14 @@ QWidget* createRobotView(Session& session, QWidget* parent);
 void captureRobotView(QWidget* view, std::function<void(const QImage&)> done);
 
 // ui/panels: the dock panels (power, IO, safety, ...). The window puts each in a QDockWidget named
-// by id (dock layout persistence) titled title, in area, tabbed with the others of that area.
+// by id (dock layout persistence) titled title, in area, tabbed with the others of that area,
+// inside a scroll area unless the panel scrolls its own parts (e.g. to keep a button bar in view).
 struct PanelSpec {
   QString id;      // stable object name, e.g. "panel.power"
   QString title;   // "Power"
   QWidget* widget = nullptr;
   Qt::DockWidgetArea area = Qt::RightDockWidgetArea;
+  bool scrolls_itself = false;
 };
 std::vector<PanelSpec> createPanels(Session& session, QWidget* parent);
 // ui/panels: before the window closes, offers to save a modified program (the Program panel under
