@@ -280,7 +280,7 @@ void TestSimRequests::toolChangesTheReportedTcp() {
   tool.translation() = Eigen::Vector3d(0.02, -0.01, 0.15);
   QCOMPARE(h.status(protocol::SetCoorRequest{rowMajor(tool)}), kOk);
   h.idle(1);
-  // Independent reference: the flange from the DH table of SPEC.md §6, then the tool.
+  // Independent reference: the flange from the DH table (model/robot_spec.cpp), then the tool.
   const Eigen::Isometry3d flange = model::dhFlangePose(model::robotSpec(XMATE7_PRO), h.state().q);
   const Eigen::Isometry3d expected = flange * tool;
   const Eigen::Isometry3d tcp = poseOf(h.state().toolTobase_pos_m);
@@ -350,7 +350,7 @@ void TestSimRequests::loadRobotModelLayout() {
       QCOMPARE(r.dims[3 * i + 0], used ? spec.q_min[i] : 0.0);
       QCOMPARE(r.dims[3 * i + 1], used ? spec.q_max[i] : 0.0);
       QCOMPARE(r.dims[3 * i + 2], used ? spec.dq_max[i] : 0.0);
-      QCOMPARE(r.dyn[4 * i], used ? spec.link_mass[i + 1] : 0.0);  // link masses (SPEC.md §6)
+      QCOMPARE(r.dyn[4 * i], used ? spec.link_mass[i + 1] : 0.0);  // link masses (model/robot_spec.cpp)
       if (used) QVERIFY(r.dyn_friction[9 * i + 0] > 0 && r.dyn_friction[9 * i + 8] > 0);  // Ixx, rotor inertia
     }
     QCOMPARE(r.dyn_friction[65], -9.81);

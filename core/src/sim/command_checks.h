@@ -1,7 +1,8 @@
-// The rules of SPEC.md §5 applied to the commands a client streams: joint position, velocity,
-// acceleration and jerk; Cartesian velocity, acceleration and jerk; arm angle rate; torque range
-// and rate. Each check adds the matching bit of SPEC.md §7 to `bits`. Derivatives come from
-// SampledDerivatives (divided differences over the message_id spacing). Allocation-free.
+// The command rules (docs/simulator_controller.md, "Command rules and the error bits") applied to
+// the commands a client streams: joint position, velocity, acceleration and jerk; Cartesian
+// velocity, acceleration and jerk; arm angle rate; torque range and rate. Each check adds the
+// matching error bit to `bits`. Derivatives come from SampledDerivatives (divided differences over
+// the message_id spacing). Allocation-free.
 #pragma once
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Motions of the simulated controller: StartMove and its refusals, the streamed commands of each
-// cycle (checks of SPEC.md §5 with their error bits, lost-command handling, instability), the end of
+// cycle (the command rules with their error bits, lost-command handling, instability), the end of
 // a motion, and the stops every error, e-stop, guard stop and power-off lead to.
 #include <cmath>
 #include <string>

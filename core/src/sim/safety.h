@@ -1,5 +1,5 @@
 // Supervision of the measured motion: collision from the estimated external joint torques, the
-// Cartesian safety box, and the "actual" error bits 0-6 (SPEC.md §7). Margins over the command
+// Cartesian safety box, and the "actual" error bits 0-6. Margins over the command
 // limits, because a measured motion overshoots a little: see the constants below and
 // docs/simulator_controller.md, "Error bits".
 #pragma once

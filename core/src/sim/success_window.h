@@ -1,5 +1,5 @@
 // control_command_success_rate: the share of the last 100 expected commands that arrived
-// (RCI_WIRE.md; libfranka uses the same window). Fixed-size ring, no allocation.
+// (docs/protocol.md; libfranka uses the same window). Fixed-size ring, no allocation.
 #pragma once
 
 #include <array>
