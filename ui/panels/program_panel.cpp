@@ -385,11 +385,15 @@ QWidget* ProgramPanel::buildRunGroup() {
   progress_->setValue(0);
   progress_->setFormat(tr("Idle"));
   progress_->setToolTip(tr("The instruction running and how much of it is done"));
-  form->addRow(tr("Progress"), progress_);
   run_state_ = new QLabel(tr("Idle"), group);
   run_state_->setObjectName(QStringLiteral("program.runState"));
+  run_state_->setToolTip(tr("The state of the run"));
   run_state_->setWordWrap(true);
-  form->addRow(tr("State"), run_state_);
+  // The state beside the progress, one row less above the editor on a small screen.
+  auto* progress_row = new QHBoxLayout;
+  progress_row->addWidget(progress_, 3);
+  progress_row->addWidget(run_state_, 2);
+  form->addRow(tr("Progress"), progress_row);
   layout->addLayout(form);
 
   // The pre-flight problems show here, under Run, while there are any.
