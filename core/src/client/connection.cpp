@@ -222,6 +222,9 @@ ControlResult Connection::runControl(ControlKind kind, const void* callback) {
   result.exception = rt.exception;
   result.fault = rt.fault;
   result.wrong_length = rt.wrong_length;
+  result.longest_stall_ms = double(rt.longest_stall_ns) * 1e-6;
+  result.stall_message_id = rt.stall_message_id;
+  result.states_skipped = rt.states_skipped;
   const uint64_t count = std::min<uint64_t>(rt.log_written, kControlLogLength);
   result.log.reserve(count);
   for (uint64_t i = rt.log_written - count; i < rt.log_written; ++i) result.log.push_back(rt.log[i % kLogCapacity]);

@@ -54,6 +54,7 @@ struct SessionCounters {
   uint64_t states_stale = 0;         // message_id not newer than the last one (reordered, duplicated)
   uint64_t states_foreign = 0;       // datagrams from an address other than the controller's
   uint64_t states_missed = 0;        // gaps in message_id (states that never arrived)
+  uint64_t states_skipped = 0;       // published but not answered: a newer state was already queued (a stall)
   uint64_t commands_sent = 0;
   uint64_t send_failures = 0;        // sendto refused
   uint64_t samples_dropped = 0;      // GUI ring full
@@ -89,6 +90,12 @@ struct ControlResult {
   CommandFault fault;                 // kInvalidCommand
   size_t wrong_length = 0;            // kWrongLength: the datagram's size
   std::vector<ControlRecord> log;     // the last cycles, oldest first (at most kControlLogLength)
+  // The client's own timing during the run: the longest time its real-time loop did not run (a
+  // healthy loop runs at least once per 1 ms cycle), the newest state when it ran again, and the
+  // states it published but did not answer because a newer one was already queued.
+  double longest_stall_ms = 0;
+  uint64_t stall_message_id = 0;
+  uint64_t states_skipped = 0;
 };
 
 inline constexpr size_t kControlLogLength = 50;

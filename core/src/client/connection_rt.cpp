@@ -159,10 +159,22 @@ void holdIfRequested(Connection::Realtime& rt, const net::Endpoint& from, int64_
   answerWithHold(rt, from, received_ns);
 }
 
-// One cycle of an armed run for the newest state: the callback answers every state until the
-// controller has ended the motion. Until the run started, answerWithHold answered since StartMove;
-// the first state reporting robot_mode kMove marks the motion as running (the first states after
-// StartMove may still report kIdle: they were computed before the request was executed).
+// Until the controller reports robot_mode kMove: "hold still", as between StartMove and Control().
+// States that still report kIdle were computed before the controller executed StartMove (the
+// real-time thread may read them late, after the run was armed); the callback must not see them,
+// or the motion's clock would start before the controller's (a step into the trajectory).
+void awaitStart(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
+  if (++rt.phase_states >= kStartWaitStates) {
+    logCycle(rt, nullptr);
+    return endRun(rt, ControlOutcome::kNotStarted);
+  }
+  answerWithHold(rt, from, received_ns);
+  logCycle(rt, &rt.command);
+}
+
+// One cycle of an armed run for the newest state: "hold still" until the first state reporting
+// robot_mode kMove, then the callback answers every state until the controller has ended the
+// motion. Until the run started, answerWithHold answered since StartMove.
 void stepRun(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
   const RobotState& s = rt.state;
   if (anyError(s.errors)) {
@@ -172,12 +184,8 @@ void stepRun(Connection::Realtime& rt, const net::Endpoint& from, int64_t receiv
   const bool moving = s.robot_mode == RobotMode::kMove;
   switch (rt.phase) {
     case RunPhase::kWaitingForStart:
-      if (moving) {
-        rt.phase = RunPhase::kRunning;
-      } else if (++rt.phase_states >= kStartWaitStates) {
-        logCycle(rt, nullptr);
-        return endRun(rt, ControlOutcome::kNotStarted);
-      }
+      if (!moving) return awaitStart(rt, from, received_ns);
+      rt.phase = RunPhase::kRunning;
       return answerWithCallback(rt, from, received_ns);
     case RunPhase::kRunning:
       if (!moving) {
@@ -206,7 +214,7 @@ void handleWrongLength(Connection::Realtime& rt, long size) {
   }
 }
 
-// Decodes and publishes one datagram; false if it was dropped.
+// Decodes and publishes one datagram of the right size; false if it was dropped.
 bool acceptState(Connection::Realtime& rt, long size, int64_t received_ns) {
   if (size != long(protocol::kRobotStateSize)) {
     handleWrongLength(rt, size);
@@ -256,6 +264,56 @@ void checkSilence(Connection::Realtime& rt, int64_t now_ns) {
   if (now_ns - since > rt.silence_limit_ns) endRun(rt, ControlOutcome::kStateTimeout);
 }
 
+// Publishes one received datagram if it is a good, newer state from the controller; false if not.
+bool acceptDatagram(Connection::Realtime& rt, long size, const net::Endpoint& from, int64_t received_ns) {
+  if (size <= 0) return false;
+  if (!sameHost(from, rt.controller)) {
+    ++rt.counters.states_foreign;
+    return false;
+  }
+  if (!acceptState(rt, size, received_ns)) return false;
+  rt.last_from = from;
+  return true;
+}
+
+// Answers the newest accepted state: the run's cycle, or "hold still" between StartMove and Control().
+void answerNewest(Connection::Realtime& rt, int64_t received_ns) {
+  if (rt.run_active)
+    stepRun(rt, rt.last_from, received_ns);
+  else
+    holdIfRequested(rt, rt.last_from, received_ns);
+}
+
+// The first datagram of a wake-up and every one queued behind it: all are published, only the
+// newest state is answered. A backlog means the loop stalled (or the controller sent a burst).
+// after_longest_stall: this wake-up ends the run's longest stall so far (noteWakeUp).
+void processWakeUp(Connection::Realtime& rt, long size, const net::Endpoint& from, int64_t received_ns,
+                   bool after_longest_stall) {
+  uint64_t accepted = acceptDatagram(rt, size, from, received_ns) ? 1 : 0;
+  if (size > 0) {
+    net::Endpoint next_from;
+    long n = 0;
+    while ((n = rt.udp.receiveFrom(rt.datagram.data(), rt.datagram.size(), &next_from, 0)) > 0)
+      accepted += acceptDatagram(rt, n, next_from, received_ns) ? 1 : 0;
+  }
+  if (after_longest_stall && rt.run_active) rt.stall_message_id = rt.last_id;  // before the run may end
+  if (accepted == 0) return checkSilence(rt, received_ns);
+  const uint64_t skipped = accepted - 1;
+  rt.counters.states_skipped += skipped;
+  if (rt.run_active) rt.states_skipped += skipped;
+  answerNewest(rt, received_ns);
+}
+
+// During a run, remembers the longest time the loop did not run (a healthy loop wakes at least
+// every cycle: a state arrives, or the 1 ms receive timeout expires). True for a new longest.
+bool noteWakeUp(Connection::Realtime& rt, int64_t now_ns) {
+  const int64_t gap = now_ns - rt.last_wake_ns;
+  rt.last_wake_ns = now_ns;
+  if (!rt.run_active || gap <= rt.longest_stall_ns) return false;
+  rt.longest_stall_ns = gap;
+  return true;
+}
+
 }  // namespace
 
 void beginRunIfArmed(Connection::Realtime& rt, int64_t now_ns) {
@@ -274,6 +332,9 @@ void beginRunIfArmed(Connection::Realtime& rt, int64_t now_ns) {
   rt.exception = nullptr;
   rt.fault = {};
   rt.wrong_length = 0;
+  rt.longest_stall_ns = 0;
+  rt.stall_message_id = 0;
+  rt.states_skipped = 0;
   rt.command = RobotCommand{};
   // The newest state may be one the controller waits for and nobody answered yet (no hold was
   // requested, e.g. a tool driving Connection directly): answer it now if it came after StartMove.
@@ -283,17 +344,10 @@ void beginRunIfArmed(Connection::Realtime& rt, int64_t now_ns) {
 }
 
 void processDatagram(Connection::Realtime& rt, long size, const net::Endpoint& from, int64_t received_ns) {
-  if (size > 0 && !sameHost(from, rt.controller)) {
-    ++rt.counters.states_foreign;
-  } else if (size > 0 && acceptState(rt, size, received_ns)) {
-    rt.last_from = from;
-    if (rt.run_active)
-      stepRun(rt, from, received_ns);
-    else
-      holdIfRequested(rt, from, received_ns);
-  } else {
+  if (acceptDatagram(rt, size, from, received_ns))
+    answerNewest(rt, received_ns);
+  else
     checkSilence(rt, received_ns);
-  }
 }
 
 void runRealtimeThread(Connection::Realtime& rt) {
@@ -305,13 +359,13 @@ void runRealtimeThread(Connection::Realtime& rt) {
   rt.started.store(1, std::memory_order_release);
   rt.started.notify_all();
 
-  rt.next_timing_ns = net::monotonicNs();
+  rt.next_timing_ns = rt.last_wake_ns = net::monotonicNs();
   while (!rt.stop.load(std::memory_order_acquire)) {
     net::Endpoint from;
     const long n = rt.udp.receiveFrom(rt.datagram.data(), rt.datagram.size(), &from, kReceiveWaitUs);
     const int64_t now = net::monotonicNs();
     beginRunIfArmed(rt, now);
-    processDatagram(rt, n, from, now);
+    processWakeUp(rt, n, from, now, noteWakeUp(rt, now));
     publishTiming(rt, now);
   }
   beginRunIfArmed(rt, net::monotonicNs());

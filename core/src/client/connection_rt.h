@@ -23,7 +23,7 @@ namespace xmate::client {
 enum RunState : uint32_t { kRunIdle = 0, kRunArmed = 1, kRunDone = 2 };
 
 enum class RunPhase {
-  kWaitingForStart,  // the controller has not yet reported robot_mode kMove (see stepRun)
+  kWaitingForStart,  // the controller has not yet reported robot_mode kMove: answered "hold still"
   kRunning,          // calling the callback every cycle; leaving kMove ends the run
   kFinishing,        // motion_generation_finished sent; waiting for the controller to leave kMove
 };
@@ -60,6 +60,7 @@ struct Connection::Realtime {
   bool have_state = false;
   uint64_t last_id = 0;
   int64_t last_state_ns = 0;
+  int64_t last_wake_ns = 0;         // when the loop last returned from its receive (stall detection)
   int64_t next_timing_ns = 0;
   net::CycleStats period_stats{1000.0, 1500.0};
   net::CycleStats cost_stats{1000.0, 1000.0};
@@ -95,15 +96,20 @@ struct Connection::Realtime {
   std::exception_ptr exception;
   CommandFault fault;
   size_t wrong_length = 0;
+  int64_t longest_stall_ns = 0;     // the longest time between two wake-ups of the loop during the run
+  uint64_t stall_message_id = 0;    // the newest state when the loop woke from that stall
+  uint64_t states_skipped = 0;      // states published but not answered (a newer one was queued)
 };
 
-// The thread's body (connection_rt.cpp).
+// The thread's body (connection_rt.cpp). Each wake-up reads every datagram already queued; all
+// states are published, only the newest is answered (after a stall the controller waits for the
+// answer to its newest state: answers to older ones would arrive too late to be used).
 void runRealtimeThread(Connection::Realtime& rt);
 
 // One step of that body, public so that `rci-cli bench client` can time the exact production path:
 // beginRunIfArmed() notices a newly armed run; processDatagram() handles the `size` bytes in
 // rt.datagram (size <= 0: nothing arrived) -- decode, publish, and during a run the callback,
-// encode and send. Real-time thread only.
+// encode and send. Real-time thread only; real-time safe (no allocation, no lock).
 void beginRunIfArmed(Connection::Realtime& rt, int64_t now_ns);
 void processDatagram(Connection::Realtime& rt, long size, const net::Endpoint& from, int64_t received_ns);
 

@@ -1,10 +1,12 @@
-// MOVEJ, MOVEL and MOVEC (API.md, "Moves"): plan with the jerk-limited planners of core/src/planning,
+// MOVEJ, MOVEL and MOVEC (docs/client.md, "MOVEJ, MOVEL, MOVEC"): plan with the jerk-limited planners of core/src/planning,
 // check the plan (move_check.h), then stream it through Robot::Control. MOVEJ runs in joint position
 // mode; MOVEL/MOVEC run in Cartesian position mode, or with an XmateModel in joint position mode with
 // IK every cycle. Time in the callbacks comes from the controller's message_id, so a lost state
-// does not shift the plan against the controller's clock.
+// does not shift the plan against the controller's clock, and after a stall of the client's loop
+// the command continues what the controller extrapolated, then rejoins the plan (stall_bridge.h).
 #include <xmate/move.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -12,6 +14,7 @@
 #include <xmate/joint_motion.h>
 
 #include "client/move_check.h"
+#include "client/stall_bridge.h"
 #include "model/robot_spec.h"
 #include "planning/cartesian_path.h"
 #include "planning/cartesian_pose.h"
@@ -26,14 +29,17 @@ using RCI::robot::RobotState;
 
 constexpr double kDt = 1e-3;
 
-// Seconds since the motion started, counted by the controller's message_id. The first two commands
-// are the plan's start itself (t = 0), so the plan's first step always follows a command at rest --
-// also when the controller measures the motion from the second answer (the first state after
-// StartMove can be one it sent before executing the request; see Connection::runControl).
+// Seconds since the motion started, counted by the controller's message_id, so a stall of the
+// client (states it never answered) does not shift the plan against the controller's clock. The
+// clock starts at the first state reporting robot_mode kMove: states sent before the controller
+// executed StartMove may reach the callback late (docs/reliability.md), and counting from them
+// would start the plan a few ms into the trajectory. The first two commands are the plan's start
+// itself (t = 0), so its first step always follows a command at rest.
 struct MotionClock {
   bool started = false;
   uint64_t origin = 0;  // message_id of the second state of the motion
   double at(const RobotState& s) {
+    if (!started && s.robot_mode != RCI::robot::RobotMode::kMove) return 0.0;
     if (!started) {
       started = true;
       origin = s.message_id + 1;
@@ -111,30 +117,53 @@ bool moveCartesian(const char* call, double speed_ratio, cart_pos& start, const 
 
   MotionClock clock;
   if (user_model) {
-    // Joint position mode, IK every cycle from the previous command.
+    // Joint position mode, IK every cycle from the previous command (and, after a stall of the
+    // loop, for the two cycles before: the bridge needs the plan's rates there).
     std::array<double, 7> q_prev = q0;
+    client::StallBridge bridge(spec.dof, client::jointBridgeLimits(spec, speed_ratio));
     robot.startMove(CM::kJointPosition, MM::kJointPosition);
     robot.Control(JointControl([&](RobotState s) -> JointPositions {
-      const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, clock.at(s));
+      const bool starting = !clock.started;
+      const double t = clock.at(s);
+      if (starting && clock.started) bridge.startAt(s.message_id, s.q_c);
+      bool plan_finished = false;
+      const client::StallBridge::Vec q = bridge.command(s.message_id, [&](int k) {
+        const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, std::max(0.0, t - k * kDt));
+        if (k == 0) plan_finished = sample.finished;
+        std::array<double, 7> ik{};
+        const int rc = model.GetJointPos(planning::poseToRowMajor(sample.pose), sample.psi, q_prev, ik);
+        if (rc != XmateModel::kIkOk)
+          throw MotionException(std::string(call) + ": IK failed during the motion: " + client::ikFailureText(rc) +
+                                " (IK code " + std::to_string(rc) + "); the motion was stopped");
+        return ik;
+      });
       JointPositions out;
-      const int rc = model.GetJointPos(planning::poseToRowMajor(sample.pose), sample.psi, q_prev, out.q);
-      if (rc != XmateModel::kIkOk)
-        throw MotionException(std::string(call) + ": IK failed during the motion: " + client::ikFailureText(rc) +
-                              " (IK code " + std::to_string(rc) + "); the motion was stopped");
-      q_prev = out.q;
-      out.motion_finished = sample.finished;
+      out.q = q;
+      q_prev = q;
+      out.motion_finished = plan_finished && !bridge.bridging();
       return out;
     }));
   } else {
     // Cartesian position mode: the controller solves IK; we send the pose and the arm angle.
+    const Eigen::Matrix3d reference = trajectory.path.start.pose.linear();
+    client::StallBridge bridge(7, client::cartesianBridgeLimits(speed_ratio));
     robot.startMove(CM::kCartesianPosition, MM::kCartesianPosition);
     robot.Control(CartesianControl([&](RobotState s) -> CartesianPose {
-      const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, clock.at(s));
+      const bool starting = !clock.started;
+      const double t = clock.at(s);
+      if (starting && clock.started)
+        bridge.startAt(s.message_id, client::cartesianCoordinates(s.toolTobase_pos_c, s.psi_c, reference));
+      bool plan_finished = false;
+      const client::StallBridge::Vec c = bridge.command(s.message_id, [&](int k) {
+        const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, std::max(0.0, t - k * kDt));
+        if (k == 0) plan_finished = sample.finished;
+        return client::cartesianCoordinates(sample.pose, sample.psi, reference);
+      });
       CartesianPose out;
-      out.toolTobase_pos_c = planning::poseToRowMajor(sample.pose);
+      out.toolTobase_pos_c = planning::poseToRowMajor(client::poseFromCoordinates(c, reference));
       out.psi_valid = spec.dof == 7;
-      out.psi_c = sample.psi;
-      out.motion_finished = sample.finished;
+      out.psi_c = c[6];
+      out.motion_finished = plan_finished && !bridge.bridging();
       return out;
     }));
   }
@@ -159,17 +188,27 @@ bool MOVEJ(double speed_ratio, const std::array<double, 7>& q_start, const std::
   if (generator.GetTime() <= 0) return true;
 
   MotionClock clock;
+  client::StallBridge bridge(spec.dof, client::jointBridgeLimits(spec, speed_ratio));
   robot.startMove(CM::kJointPosition, MM::kJointPosition);
   robot.Control(JointControl([&](RobotState s) -> JointPositions {
-    if (!clock.started) {
+    const bool starting = !clock.started;
+    const double t = clock.at(s);
+    if (starting && clock.started) {
       q0 = s.q;  // where the motion really starts; re-plans only if the robot moved meanwhile
       generator.calculateSynchronizedValues_joint(q0);
+      bridge.startAt(s.message_id, s.q_c);  // the "hold still" command the controller has now
     }
-    std::array<double, 7> delta{};
+    bool plan_finished = false;
+    const client::StallBridge::Vec q = bridge.command(s.message_id, [&](int k) {
+      std::array<double, 7> delta{}, plan{};
+      const bool finished = generator.calculateDesiredValues_joint(std::max(0.0, t - k * kDt), delta);
+      if (k == 0) plan_finished = finished;
+      for (int i = 0; i < spec.dof; ++i) plan[i] = finished ? q_target[i] : q0[i] + delta[i];
+      return plan;
+    });
     JointPositions out;
-    const bool finished = generator.calculateDesiredValues_joint(clock.at(s), delta);
-    for (int i = 0; i < spec.dof; ++i) out.q[i] = finished ? q_target[i] : q0[i] + delta[i];
-    out.motion_finished = finished;
+    for (int i = 0; i < spec.dof; ++i) out.q[i] = q[i];
+    out.motion_finished = plan_finished && !bridge.bridging();
     return out;
   }));
   return true;

@@ -74,6 +74,23 @@ std::string where(const RCI::robot::RobotState& s, const std::vector<ControlReco
   return buf;
 }
 
+// A loop stall this long cannot be mistaken for jitter (a healthy loop runs every 1 ms cycle): a few
+// commands were missing, and the controller may have stopped because of it.
+constexpr double kStallNoteMs = 5.0;
+
+// Explains a stall of the client's own loop during the run ("" if there was none worth naming).
+std::string stallNote(const client::ControlResult& r) {
+  if (r.longest_stall_ms < kStallNoteMs) return "";
+  char buf[420];
+  std::snprintf(buf, sizeof buf,
+                " The client's real-time loop stalled for %.0f ms (until message_id %llu): no command was sent "
+                "meanwhile, and the controller stops a motion after about 15 missing commands in a row (a "
+                "stall of more than about 15 ms). Give the loop real-time priority (docs/client.md, \"Real-time "
+                "setup\"), check this machine with `rci-cli doctor`, or run on a quieter machine.",
+                r.longest_stall_ms, static_cast<unsigned long long>(r.stall_message_id));
+  return buf;
+}
+
 }  // namespace
 
 void Robot::startMove(CM controller_mode, MM motion_mode) {
@@ -128,7 +145,8 @@ void stopQuietly(Robot& robot) {
     case ControlOutcome::kFinished: break;
     case ControlOutcome::kControllerError:
       throw ControlException(call + ": the controller stopped the motion " + where(s, r.log) + " with error bits " +
-                                 client::describeErrors(s.errors) + ". Then call automaticErrorRecovery().",
+                                 client::describeErrors(s.errors) + "." + stallNote(r) +
+                                 " Then call automaticErrorRecovery().",
                              s.errors, r.log);
     case ControlOutcome::kEndedByController:
       throw ControlException(call + ": the controller ended the motion without error bits " + where(s, r.log) +

@@ -1,8 +1,10 @@
 // The executor's motions (executor.h): MOVEJ streams the joint S-curve in joint position mode,
 // MOVEL/MOVEC stream the timed Cartesian path in Cartesian position mode. Both sample their plan at
 // a plan time that advances by k * dt per cycle (TimeScaling), which is how pause, stop and the
-// speed override act smoothly on the path. The callbacks run on the real-time thread: they touch
-// only atomics (relaxed loads/stores) and locals, and allocate nothing.
+// speed override act smoothly on the path. After a stall of the client's loop the command continues
+// what the controller extrapolated and rejoins the plan (client/stall_bridge.h). The callbacks run
+// on the real-time thread: they touch only atomics (relaxed loads/stores) and locals, and allocate
+// nothing.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +15,7 @@
 #include <xmate/joint_motion.h>
 
 #include "client/move_check.h"
+#include "client/stall_bridge.h"
 #include "model/robot_spec.h"
 #include "planning/cartesian_pose.h"
 #include "planning/cartesian_trajectory.h"
@@ -32,18 +35,20 @@ constexpr double kSettleTolerance = 1e-6;  // rad: measured joints this close to
 constexpr int kSettleLimitMs = 1000;
 constexpr int kStartRetryMs = 3000;
 
-// Plan time driven by the controller's message_id and the time scaling. The first two commands are
-// the plan's start (as in client/move.cpp's MotionClock: the controller may measure the motion from
-// the second answer), then each elapsed cycle advances the plan by k * dt.
+// Plan time driven by the controller's message_id and the time scaling. As client/move.cpp's
+// MotionClock it starts at the first state reporting robot_mode kMove (earlier states were sent
+// before the controller started the motion); the first two commands are the plan's start, then each
+// elapsed cycle -- also those a client stall left unanswered -- advances the plan by k * dt.
 struct ScaledClock {
   TimeScaling scaling;
-  int calls = 0;
+  int calls = 0;  // states of the motion seen (robot_mode kMove)
   uint64_t first_id = 0, last_id = 0;
   double plan_time = 0;
 
   ScaledClock(double k, double rate) : scaling(k, rate) {}
   double advance(const RobotState& s, double target_k) {
     scaling.setTarget(target_k);
+    if (calls == 0 && s.robot_mode != RCI::robot::RobotMode::kMove) return 0;
     if (calls++ == 0) first_id = s.message_id;
     if (calls <= 2) {
       last_id = s.message_id;
@@ -59,6 +64,8 @@ struct ScaledClock {
     return plan_time;
   }
   double elapsed() const { return double(last_id - first_id) * kDt; }
+  // The plan time k cycles before the current one, at the current rate (for the stall bridge).
+  double planTimeBefore(int k) const { return std::max(0.0, plan_time - k * scaling.value() * kDt); }
 };
 
 double jointError(const RobotState& s, int dof) {
@@ -158,28 +165,37 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
     const double total = generator.GetTime();
     if (total > 0) {
       std::array<double, 7> last = q0;
+      client::StallBridge bridge(dof, client::jointBridgeLimits(spec, share));
       startMoveWhenReady(*robot_, CM::kJointPosition, MM::kJointPosition);
       robot_->Control(JointControl([&](RobotState s) -> JointPositions {
-        if (clock.calls == 0) {
+        const bool starting = clock.calls == 0;
+        track(s);
+        const double t = clock.advance(s, targetK());
+        if (starting && clock.calls == 1) {
           q0 = s.q;  // where the motion really starts
           last = q0;
           generator.calculateSynchronizedValues_joint(q0);
+          bridge.startAt(s.message_id, s.q_c);  // the "hold still" command the controller has now
         }
-        track(s);
-        const double t = clock.advance(s, targetK());
         fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
         JointPositions out;
-        if (stoppedHere()) {
+        if (stoppedHere() && !bridge.bridging()) {
           stopped = true;
           out.q = last;
           out.motion_finished = true;
           return out;
         }
-        std::array<double, 7> delta{};
-        const bool finished = generator.calculateDesiredValues_joint(t, delta);
-        for (int i = 0; i < dof; ++i) out.q[i] = finished ? goal[i] : q0[i] + delta[i];
+        bool plan_finished = false;
+        const client::StallBridge::Vec q = bridge.command(s.message_id, [&](int k) {
+          std::array<double, 7> delta{}, plan{};
+          const bool finished = generator.calculateDesiredValues_joint(clock.planTimeBefore(k), delta);
+          if (k == 0) plan_finished = finished;
+          for (int i = 0; i < dof; ++i) plan[i] = finished ? goal[i] : q0[i] + delta[i];
+          return plan;
+        });
+        out.q = q;
         last = out.q;
-        out.motion_finished = finished;
+        out.motion_finished = plan_finished && !bridge.bridging();
         return out;
       }));
     }
@@ -193,20 +209,30 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
       last.toolTobase_pos_c = planning::poseToRowMajor(path.start.pose);
       last.psi_valid = dof == 7;
       last.psi_c = path.start.psi;
+      const Eigen::Matrix3d reference = path.start.pose.linear();
+      client::StallBridge bridge(7, client::cartesianBridgeLimits(share));
       startMoveWhenReady(*robot_, CM::kCartesianPosition, MM::kCartesianPosition);
       robot_->Control(CartesianControl([&](RobotState s) -> CartesianPose {
         track(s);
+        const bool starting = clock.calls == 0;
         const double t = clock.advance(s, targetK());
+        if (starting && clock.calls == 1)
+          bridge.startAt(s.message_id, client::cartesianCoordinates(s.toolTobase_pos_c, s.psi_c, reference));
         fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
-        if (stoppedHere()) {
+        if (stoppedHere() && !bridge.bridging()) {
           stopped = true;
           return MotionFinished(last);
         }
-        const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, t);
-        last.toolTobase_pos_c = planning::poseToRowMajor(sample.pose);
+        bool plan_finished = false;
+        const client::StallBridge::Vec c = bridge.command(s.message_id, [&](int k) {
+          const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, clock.planTimeBefore(k));
+          if (k == 0) plan_finished = sample.finished;
+          return client::cartesianCoordinates(sample.pose, sample.psi, reference);
+        });
+        last.toolTobase_pos_c = planning::poseToRowMajor(client::poseFromCoordinates(c, reference));
         last.psi_valid = dof == 7;
-        last.psi_c = sample.psi;
-        last.motion_finished = sample.finished;
+        last.psi_c = c[6];
+        last.motion_finished = plan_finished && !bridge.bridging();
         return last;
       }));
     }
