@@ -48,6 +48,6 @@ int runState(Args args);        // rci-cli state --robot HOST:PORT [--count N]
 int runDoctor(Args args);       // rci-cli doctor
 int runBenchLoop(Args args);    // rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep]
 int runBenchClient(Args args);  // rci-cli bench client [--cycles N]
-int runRun(Args args);          // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE]
+int runRun(Args args);          // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]
 
 }  // namespace rci_cli

@@ -1,6 +1,7 @@
 // rci-cli run: loads a program, connects to a robot (or starts an in-process simulator for the
-// program's model), runs the pre-flight and the executor (core/src/teach), prints a line per
-// instruction, and writes the run report. Ctrl-C stops the robot smoothly on its path.
+// program's model: real-time clock, or lock-step with --fast), runs the pre-flight and the executor
+// (core/src/teach), prints a line per instruction, and writes the run report. Ctrl-C stops the
+// robot smoothly on its path.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -35,6 +36,7 @@ struct RunOptions {
   xmate::XmateType model = xmate::XMATE7_PRO;
   double speed = 1.0;
   std::string report_path;
+  bool fast = false;  // in-process simulator on the lock-step clock (faster than real time)
 };
 
 double parseRatio(const std::string& option, const std::string& text) {
@@ -59,6 +61,8 @@ RunOptions parseRunOptions(Args& args) {
       o.have_model = true;
     } else if (option == "--speed") {
       o.speed = parseRatio(option, args.value(option));
+    } else if (option == "--fast") {
+      o.fast = true;
     } else if (option == "--report") {
       o.report_path = args.value(option);
       if (o.report_path.empty()) throw UsageError("--report needs a file name");
@@ -72,11 +76,23 @@ RunOptions parseRunOptions(Args& args) {
   }
   if (o.program_path.empty()) throw UsageError("run needs a program file (PROGRAM.json)");
   if (!o.have_robot) throw UsageError("run needs --robot sim or --robot HOST:PORT");
+  if (o.fast && !o.in_process)
+    throw UsageError("--fast applies to the in-process simulator (--robot sim); a controller keeps its own clock");
   return o;
 }
 
-std::unique_ptr<xmate::sim::Server> startSimulator(xmate::XmateType type) {
-  auto config = xmate::sim::embeddedConfig(type, xmate::sim::ClockMode::kLockStep);  // deterministic under load
+// Real-time clock by default: the motions take their real durations, as on a robot. --fast: the
+// lock-step clock, which waits for each answer and otherwise runs as fast as the client answers.
+xmate::sim::ClockMode simulatorClock(const RunOptions& o) {
+  return o.fast ? xmate::sim::ClockMode::kLockStep : xmate::sim::ClockMode::kRealTime;
+}
+
+const char* clockText(xmate::sim::ClockMode clock) {
+  return clock == xmate::sim::ClockMode::kLockStep ? "lock-step clock, faster than real time" : "real-time clock";
+}
+
+std::unique_ptr<xmate::sim::Server> startSimulator(xmate::XmateType type, xmate::sim::ClockMode clock) {
+  auto config = xmate::sim::embeddedConfig(type, clock);
   config.sim.motors_on_at_start = true;
   config.sim.do_to_di_loopback = true;  // DO k drives DI k, so SET_DO / WAIT_DI pairs work without wiring
   return xmate::sim::startEmbedded(std::move(config));
@@ -107,6 +123,24 @@ std::thread interruptWatcher(Executor& executor, const std::atomic<bool>& done) 
   });
 }
 
+// The controller time of the motions plus the wall time of the other instructions.
+double instructionSeconds(const RunReport& report) {
+  double total = 0;
+  for (const InstructionReport& r : report.instructions)
+    if (r.status != InstructionStatus::kNotRun) total += r.duration;
+  return total;
+}
+
+void printFinished(const RunOptions& o, const Program& program, const RunReport& report) {
+  std::printf("finished: %zu instructions in %.2f s", program.instructions.size(), report.duration);
+  if (o.in_process && o.fast)
+    std::printf(" (in-process simulator, %s; the instructions' own durations add up to %.2f s)",
+                clockText(simulatorClock(o)), instructionSeconds(report));
+  else if (o.in_process)
+    std::printf(" (in-process simulator, %s)", clockText(simulatorClock(o)));
+  std::printf("\n");
+}
+
 }  // namespace
 
 int runRun(Args args) {
@@ -118,14 +152,15 @@ int runRun(Args args) {
   std::unique_ptr<xmate::sim::Server> server;
   HostPort address = o.robot;
   if (o.in_process) {
-    server = startSimulator(type);
+    server = startSimulator(type, simulatorClock(o));
     address = {"127.0.0.1", server->port()};
   }
   xmate::Robot robot(address.host, address.port, type);
   robot.connect();
+  const std::string where = o.in_process ? std::string(" (in-process simulator, ") + clockText(simulatorClock(o)) + ")" : "";
   std::printf("running %s (%zu instructions, %s) on %s:%u%s at %.0f %% speed\n", o.program_path.c_str(),
               program.instructions.size(), std::string(xmate::model::robotSpec(type).display_name).c_str(),
-              address.host.c_str(), address.port, o.in_process ? " (in-process simulator)" : "", o.speed * 100);
+              address.host.c_str(), address.port, where.c_str(), o.speed * 100);
   std::fflush(stdout);
 
   Executor executor;
@@ -146,7 +181,7 @@ int runRun(Args args) {
   }
   switch (report.outcome) {
     case RunState::kFinished:
-      std::printf("finished: %zu instructions in %.2f s\n", program.instructions.size(), report.duration);
+      printFinished(o, program, report);
       return 0;
     case RunState::kRefused:
       std::fprintf(stderr, "rci-cli: %s", report.message.c_str());

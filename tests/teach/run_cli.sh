@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # test_cli_run: `rci-cli run` on the example program against the in-process simulator exits 0 and
-# writes a finished report; a usage error exits 2; a program refused by the pre-flight exits 1
-# without moving. Arguments: RCI_CLI EXAMPLE_PROGRAM WORK_DIR.
+# writes a finished report, on the real-time clock by default and on the lock-step clock with
+# --fast, and says which clock ran; a usage error exits 2; a program refused by the pre-flight
+# exits 1 without moving. Arguments: RCI_CLI EXAMPLE_PROGRAM WORK_DIR.
 set -u
 cli=$1 example=$2 work=$3
 report=$work/cli_run_report.json
@@ -9,12 +10,20 @@ rm -f "$report"
 
 fail() { echo "FAIL: $*"; exit 1; }
 
-"$cli" run "$example" --robot sim --speed 0.8 --report "$report" || fail "run of the example exited $?"
+out=$("$cli" run "$example" --robot sim --speed 0.8 --report "$report" 2>&1) || fail "run of the example exited $?: $out"
 test -s "$report" || fail "no report at $report"
 grep -q '"outcome": "finished"' "$report" || fail "report outcome is not finished: $(head -c 400 "$report")"
 n=$(grep -c '"status": "done"' "$report")
 [ "$n" -eq 7 ] || fail "expected 7 instructions done, found $n"
 grep -q '"max_tcp_error_m"' "$report" || fail "report has no tracking error"
+echo "$out" | grep -q '^finished: 7 instructions in .* (in-process simulator, real-time clock)$' ||
+  fail "the default run does not say it ran the real-time clock: $out"
+
+out=$("$cli" run "$example" --robot sim --fast 2>&1) || fail "run --fast of the example exited $?: $out"
+echo "$out" | grep -q '^finished: 7 instructions in .* (in-process simulator, lock-step clock, faster than real time; the instructions.* own durations add up to .* s)$' ||
+  fail "the --fast run does not say it ran the lock-step clock: $out"
+"$cli" run "$example" --robot 127.0.0.1:1 --fast >/dev/null 2>&1
+[ $? -eq 2 ] || fail "--fast with a controller address should be a usage error (exit 2)"
 
 "$cli" run "$example" --robot sim --speed 3 >/dev/null 2>&1
 [ $? -eq 2 ] || fail "--speed 3 should be a usage error (exit 2)"
@@ -29,4 +38,4 @@ out=$("$cli" run "$bad" --robot sim --report "$report" 2>&1)
 [ $? -eq 1 ] || fail "an unreachable program should exit 1; output: $out"
 echo "$out" | grep -q 'instruction 2 (MOVEL "P2")' || fail "the refusal does not name instruction 2: $out"
 grep -q '"outcome": "refused"' "$report" || fail "report of the refused run is not 'refused'"
-echo "3 passed, 0 failed"
+echo "6 passed, 0 failed"
