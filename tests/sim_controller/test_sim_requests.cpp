@@ -50,7 +50,7 @@ class TestSimRequests : public QObject {
   void toolChangesTheReportedTcp();
   void loadChangesTheModel();
   void safetyBoxRefusedWhenTcpOutside();
-  void softLimitsRefusedWhenJointOutside();
+  void softLimitsLeavingJointOutsideReportBitZero();
   void loadRobotModelLayout();
   void digitalIoAndLoopback();
   void dragRequests();
@@ -321,9 +321,27 @@ void TestSimRequests::safetyBoxRefusedWhenTcpOutside() {
   QVERIFY2(!h.anyError(), h.errorList().c_str());
 }
 
-void TestSimRequests::softLimitsRefusedWhenJointOutside() {
+void TestSimRequests::softLimitsLeavingJointOutsideReportBitZero() {
   Harness h;  // q2 starts at 30 deg
-  QCOMPARE(h.status(protocol::SetJointLimitRequest{{170, 20, 170, 120, 170, 120, 360}, {-170, -120, -170, -120, -170, -120, -360}, false}), kNotPossible);
+  h.powerOnAndSettle();
+  const double q2 = h.state().q[1];
+  // Limits that leave J2 outside are accepted, and J2 is reported beyond its limit at once.
+  QCOMPARE(h.status(protocol::SetJointLimitRequest{{170, 20, 170, 120, 170, 120, 360}, {-170, -120, -170, -120, -170, -120, -360}, false}), kOk);
+  h.idle(2);
+  QCOMPARE(h.errorList(), std::string("kActualJointPositionLimitsViolation"));
+  QCOMPARE(h.startMove(CM::kJointPosition, MG::kJointPosition), uint8_t(protocol::StartMoveStatus::kReflexAborted));
+  // After recovery, a motion back towards the range is accepted; the arm stays powered.
+  QCOMPARE(h.recover(), kOk);
+  QVERIFY(h.status().motors_on);
+  QCOMPARE(h.startMove(CM::kJointPosition, MG::kJointPosition), kOk);
+  std::array<double, 7> q = h.state().q;
+  for (int i = 0; i < 200; ++i) {
+    q[1] -= 2e-6 * i;  // gently accelerating towards 20 deg
+    h.stepJoint(q, i == 199);
+  }
+  h.idle(50);
+  QVERIFY2(!h.anyError(), h.errorList().c_str());
+  QVERIFY(h.state().q[1] < q2);
   QCOMPARE(h.status(protocol::SetJointLimitRequest{{170, 40, 170, 120, 170, 120, 360}, {-170, -120, -170, -120, -170, -120, -360}, true}), kOk);
   // The 116-byte form (without auto_limit) is accepted.
   protocol::Frame frame = protocol::encodeFrame(1, protocol::SetJointLimitRequest{{170, 40, 170, 120, 170, 120, 360}, {-170, -120, -170, -120, -170, -120, -360}, true});

@@ -57,7 +57,8 @@ SoftLimitsPanel::SoftLimitsPanel(Session& session, QWidget* parent)
   hardware->setToolTip(tr("Fill the fields with the model's hardware limits"));
   auto* apply = new QPushButton(tr("Apply"), group);
   apply->setObjectName(QStringLiteral("limits.apply"));
-  apply->setToolTip(tr("Send the limits to the robot; refused while a joint is outside the new range"));
+  apply->setToolTip(tr("Send the limits to the robot. A joint outside the new range is reported beyond its limit: "
+                          "press Recover in the Safety panel, then jog or guide it back in"));
   addSendWidget(apply);
   row->addWidget(hardware);
   row->addStretch(1);

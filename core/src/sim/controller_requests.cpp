@@ -169,15 +169,19 @@ uint8_t Controller::Impl::setJointLimit(const uint8_t* p, size_t n) {
   constexpr double kRad = 3.14159265358979323846 / 180.0;
   const JointVector upper = toJointVector(r.upper, spec.dof) * kRad;
   const JointVector lower = toJointVector(r.lower, spec.dof) * kRad;
-  for (int i = 0; i < spec.dof; ++i)
-    if (plant.q[i] < lower[i] || plant.q[i] > upper[i])
-      return refuse(kNotPossible, "setJointLimit: joint " + std::to_string(i + 1) + " is at " +
-                                      std::to_string(plant.q[i] / kRad) +
-                                      " deg, outside the requested limits; move it inside first");
   settings.soft_upper = upper;
   settings.soft_lower = lower;
   settings.auto_limit = r.auto_limit;
   joint_allowance.reset(plant.q, lower, upper, spec.dof);
+  // Limits that leave a joint outside are accepted, and the joint is reported beyond its limit at
+  // once (bit 0), as a measured violation: after recovery it may be moved back in, not further out.
+  for (int i = 0; i < spec.dof; ++i)
+    if (plant.q[i] < lower[i] || plant.q[i] > upper[i]) {
+      ErrorBits bits{};
+      raise(bits, kActualJointPositionLimitsViolation);
+      raiseErrors(bits);
+      break;
+    }
   return kOk;
 }
 
