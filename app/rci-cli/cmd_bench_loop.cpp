@@ -1,7 +1,7 @@
 // rci-cli bench loop: a 1 kHz JointControl loop (a slow out-and-back swing of joint 1) against an
 // in-process simulator (sim::Server, real-time clock by default) or a given robot. Prints the cycle
 // period statistics, jitter, late and lost cycles, the command success rate, and the KUKA RSI
-// paper's min/max/mean table (SPEC.md §9) over the whole run.
+// paper's min/max/mean table (docs/performance.md) over the whole run.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -174,7 +174,7 @@ int runBenchLoop(Args args) {
                 100.0 * double(used) / double(std::max<uint64_t>(1, used + lost)), static_cast<unsigned long long>(lost));
   }
 
-  std::printf("\n  The paper's table (SPEC.md §9), over %ld cycles:\n", rec.cycles);
+  std::printf("\n  The paper's table (docs/performance.md), over %ld cycles:\n", rec.cycles);
   std::printf("  %-40s %9s %9s %9s\n", "(us)", "min", "max", "mean");
   std::printf("  %-40s %9.2f %9.2f %9.2f\n", "cycle period jitter |period - 1 ms|", jitter.min, jitter.max, jitter.mean);
   std::printf("  %-40s %9.2f %9.2f %9.2f\n", "client response (state in -> command out)", timing.cost.min_us,

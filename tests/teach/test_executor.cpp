@@ -2,8 +2,8 @@
 // dragging the arm with injected forces (J, L, C via + target), save, reload and replay them to
 // within 1e-4 rad / 0.1 mm with no error bit; pause and resume mid-move (the arm stops on its path
 // without tripping a limit, then finishes at the target); stop; speed override; single step;
-// programs refused by the pre-flight move nothing; a controller error (e-stop) and a DI timeout
-// abort naming the instruction.
+// programs refused by the pre-flight move nothing; a controller error (e-stop), a guard stop and a
+// DI timeout abort naming the instruction.
 #include <QtTest>
 
 #include <chrono>
@@ -121,6 +121,7 @@ class TestExecutor : public QObject {
   void unreachableProgramIsRefusedBeforeMoving();
   void outOfBoxProgramIsRefusedBeforeMoving();
   void controllerErrorAbortsNamingTheInstruction();
+  void guardStopAbortsNamingTheInstruction();
   void waitDiTimesOutNamingTheInstruction();
   void ioInstructions();
   void poseTargetsOnASixAxisArm();
@@ -367,6 +368,31 @@ void TestExecutor::controllerErrorAbortsNamingTheInstruction() {
   QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 2 (MOVEJ \"far\"): the controller aborted"),
            report.message.c_str());
   QCOMPARE(executor.progress().state, RunState::kFailed);
+}
+
+void TestExecutor::guardStopAbortsNamingTheInstruction() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  const Program program = longMove(*robot, 2.0, 0.5);
+  Executor executor;
+  RunReport report;
+  {
+    WhenProgress gstop(executor, [](const Progress& p) { return p.instruction == 0 && p.fraction > 0.2; },
+                       [&] { server->setGuardStop(true); });
+    report = executor.run(*robot, program);
+  }
+  QCOMPARE(report.outcome, RunState::kFailed);
+  QCOMPARE(report.failed_instruction, 0L);
+  QCOMPARE(report.instructions[0].status, InstructionStatus::kFailed);
+  const QString message = QString::fromStdString(report.message);
+  QVERIFY2(message.startsWith("instruction 1 (MOVEJ \"far\"): the controller aborted"), qPrintable(message));
+  QVERIFY2(message.contains("guard or emergency stop"), qPrintable(message));
+  // The robot stood still where the guard stop caught it; released, it moves again.
+  server->setGuardStop(false);
+  QCOMPARE(robot->getSafetyStopState(), 1);
+  whenReady([&] { robot->automaticErrorRecovery(); });
+  const RunReport again = executor.run(*robot, longMove(*robot, -0.1, 0.5));
+  QVERIFY2(again.outcome == RunState::kFinished, again.message.c_str());
 }
 
 void TestExecutor::waitDiTimesOutNamingTheInstruction() {

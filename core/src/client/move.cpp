@@ -1,9 +1,10 @@
-// MOVEJ, MOVEL and MOVEC (docs/client.md, "MOVEJ, MOVEL, MOVEC"): plan with the jerk-limited planners of core/src/planning,
-// check the plan (move_check.h), then stream it through Robot::Control. MOVEJ runs in joint position
-// mode; MOVEL/MOVEC run in Cartesian position mode, or with an XmateModel in joint position mode with
-// IK every cycle. Time in the callbacks comes from the controller's message_id, so a lost state
-// does not shift the plan against the controller's clock, and after a stall of the client's loop
-// the command continues what the controller extrapolated, then rejoins the plan (stall_bridge.h).
+// MOVEJ, MOVEL and MOVEC (docs/client.md, "MOVEJ, MOVEL, MOVEC"): plan with the jerk-limited
+// planners of core/src/planning, check the plan (move_check.h), then stream it through
+// Robot::Control. MOVEJ runs in joint position mode; MOVEL/MOVEC run in Cartesian position mode, or
+// with an XmateModel in joint position mode with IK every cycle. Time in the callbacks comes from
+// the controller's message_id, so a lost state does not shift the plan against the controller's
+// clock, and after a stall of the client's loop the command continues what the controller
+// extrapolated, then rejoins the plan (stall_bridge.h).
 #include <xmate/move.h>
 
 #include <algorithm>
