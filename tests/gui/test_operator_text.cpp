@@ -117,7 +117,7 @@ void TestOperatorText::jointBeyondUpperLimit() {
   QCOMPARE(beyond[0].joint, 5);
   QCOMPARE(describe(beyond[0]), QStringLiteral("J6 reached its upper limit (120.7° > 120.0°)"));
   QCOMPARE(remedy(beyond[0]), QStringLiteral("J6 is 0.7° beyond its upper limit: Jog J6 \u2212 or guide it back "
-                                             "towards the range, then press Recover in the Safety panel"));
+                                             "towards the range"));
   q[5] = 119.0 * kRadPerDeg;  // within: nothing
   QVERIFY(jointsBeyondLimits(q, 7, nullptr, spec).empty());
 }
@@ -154,7 +154,7 @@ void TestOperatorText::jointLimitBitCarriesTheJoint() {
   QVERIFY2(m.what.contains(QStringLiteral("J6 reached its upper limit (120.7° > 120.0°)")), qPrintable(m.what));
   QVERIFY2(m.todo.contains(QStringLiteral("J6 is 0.7° beyond its upper limit: Jog J6 \u2212 or guide it back")),
            qPrintable(m.todo));
-  QVERIFY2(m.todo.endsWith(QStringLiteral("then press Recover in the Safety panel.")), qPrintable(m.todo));
+  QVERIFY2(m.todo.startsWith(QStringLiteral("Press Recover in the Safety panel, then bring it back.")), qPrintable(m.todo));
 
   // The same joint without the bit (after Recover) is still reported, without Recover.
   live.state.errors[0] = false;

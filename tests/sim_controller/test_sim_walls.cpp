@@ -110,6 +110,7 @@ class TestSimWalls : public QObject {
   void wristMomentOf500NmIsHeld();
   void hardwareLimitHoldsInCartesianGuiding();
   void releasedFromTheWallItComesBackSlowly();
+  void hardTwistSaturatesTheGuidingSpeed();
   void safetyBoxIsAWallInCartesianGuiding();
   void safetyBoxIsAWallInJointGuiding();
   void jointBeyondItsLimitGuidesAndJogsBack();
@@ -238,6 +239,30 @@ void TestSimWalls::releasedFromTheWallItComesBackSlowly() {
   qInfo("released from the walls: fastest joint %.3f rad/s", fastest);
   QVERIFY(fastest < 0.8);
   QVERIFY(fastest > 0.01);  // it did come back out
+}
+
+void TestSimWalls::hardTwistSaturatesTheGuidingSpeed() {
+  // A 40 Nm twist about z on the free arm in joint-space guiding would spin the wrist (damped
+  // 5 Nm s/rad) far beyond its rated speed and trip bit 3; the guiding speed limit saturates every
+  // joint below the velocity monitor's threshold instead, and the TCP below 1 m/s.
+  Harness h;
+  h.powerOnAndSettle();
+  QCOMPARE(h.startDrag(0, 2), kOk);
+  double worst_ratio = 0, fastest_tcp = 0;
+  auto previous = tcpPosition(h);
+  QVERIFY2(pull(h, {0, 0, 0, 0, 0, 40}, 100, 1500, [&] {
+             for (size_t i = 0; i < 7; ++i)
+               worst_ratio = std::max(worst_ratio, std::abs(h.state().dq_m[i]) / spec().dq_max[i]);
+             const auto now = tcpPosition(h);
+             fastest_tcp = std::max(fastest_tcp, (now - previous).norm() * 1000.0);
+             previous = now;
+           }),
+           h.errorList().c_str());
+  qInfo("40 Nm twist: fastest joint at %.2f x its rated speed, TCP at most %.2f m/s", worst_ratio, fastest_tcp);
+  QVERIFY(worst_ratio < 0.95);
+  QVERIFY(worst_ratio > 0.5);  // it was pushed hard: the limit, not the push, set the speed
+  QVERIFY(fastest_tcp < 1.0);
+  QVERIFY(h.status().dragging);
 }
 
 void TestSimWalls::safetyBoxIsAWallInCartesianGuiding() {

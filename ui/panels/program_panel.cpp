@@ -504,10 +504,16 @@ void ProgramPanel::record() {
   const int row = selectedRow() >= 0 ? selectedRow() + 1 : model_->count();
   model_->insert(row, in);
   selectRow(row);
-  showStatus(tr("Recorded %1 (%2) as instruction %3.")
-                 .arg(QString::fromStdString(name), QLatin1String(xmate::teach::typeName(in.type)))
-                 .arg(row + 1),
-             false);
+  note(tr("Recorded %1 (%2) as instruction %3.")
+           .arg(QString::fromStdString(name), QLatin1String(xmate::teach::typeName(in.type)))
+           .arg(row + 1),
+       false);
+}
+
+void ProgramPanel::note(const QString& text, bool error, const QString& path) {
+  showStatus(text, error);
+  session().reportEvent(error ? Session::EventLevel::kError : Session::EventLevel::kInfo,
+                        title() + QStringLiteral(": ") + text, path);
 }
 
 void ProgramPanel::resetDiTrigger() {

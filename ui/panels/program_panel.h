@@ -86,6 +86,9 @@ class ProgramPanel : public PanelBase {
   // Teaching and editing (program_panel.cpp).
   void record();
   void cancelPendingVia();
+  // Shows text in the status line and writes it to the event log (Messages dock), the file's full
+  // path as the detail: what was taught, opened and saved is on record.
+  void note(const QString& text, bool error, const QString& path = QString());
   void resetDiTrigger();
   void addLogic();
   void applyLogic();

@@ -90,7 +90,7 @@ bool ProgramPanel::openFile(const QString& path) {
   try {
     loaded = xmate::teach::loadProgram(path.toStdString());
   } catch (const std::exception& e) {
-    showStatus(tr("Open failed: %1 — the program shown was not changed.").arg(QString::fromStdString(e.what())), true);
+    note(tr("Open failed: %1 — the program shown was not changed.").arg(QString::fromStdString(e.what())), true, path);
     return false;
   }
   model_->setProgram(loaded);
@@ -110,8 +110,8 @@ bool ProgramPanel::openFile(const QString& path) {
       note = QStringLiteral(" ") + QString::fromStdString(e.what());
     }
   }
-  showStatus(tr("Opened %1: %n instruction(s).", nullptr, int(loaded.instructions.size())).arg(QFileInfo(path).fileName()) + note,
-             !note.isEmpty());
+  this->note(tr("Opened %1: %n instruction(s).", nullptr, int(loaded.instructions.size())).arg(QFileInfo(path).fileName()) + note,
+             !note.isEmpty(), path);
   return true;
 }
 
@@ -130,14 +130,14 @@ bool ProgramPanel::saveFile(const QString& path) {
     for (size_t i = 0; i < p.instructions.size(); ++i) xmate::teach::validateInstruction(p.instructions[i], i, p.robot);
     xmate::teach::saveProgram(path.toStdString(), p);
   } catch (const std::exception& e) {
-    showStatus(tr("Save failed: %1 — nothing was written; fix it and save again.").arg(QString::fromStdString(e.what())), true);
+    note(tr("Save failed: %1 — nothing was written; fix it and save again.").arg(QString::fromStdString(e.what())), true, path);
     return false;
   }
   path_ = path;
   modified_ = false;
   saveValue(QStringLiteral("lastDir"), QFileInfo(path).absolutePath());
   updateTitle();
-  showStatus(tr("Saved %1.").arg(QFileInfo(path).fileName()), false);
+  note(tr("Saved %1.").arg(QFileInfo(path).fileName()), false, path);
   return true;
 }
 

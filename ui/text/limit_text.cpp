@@ -78,7 +78,7 @@ QString describe(const JointExcursion& e) {
 
 QString remedy(const JointExcursion& e) {
   const QString button = QStringLiteral("J%1 %2").arg(e.joint + 1).arg(e.upper ? kMinus : QStringLiteral("+"));
-  return tr("J%1 is %2 beyond its %3: Jog %4 or guide it back towards the range, then press Recover in the Safety panel")
+  return tr("J%1 is %2 beyond its %3: Jog %4 or guide it back towards the range")
       .arg(e.joint + 1)
       .arg(amountDeg(e.beyondDeg()), limitName(e), button);
 }

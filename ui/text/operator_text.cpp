@@ -70,8 +70,8 @@ constexpr BitText kBits[kErrorBitCount] = {
 QString familyTodo(Family family) {
   switch (family) {
     case Family::kJointLimit:
-      return tr("Jog that joint back (Jog panel) or guide it back towards its range (Drag panel), then press Recover "
-                "in the Safety panel.");
+      return tr("Press Recover in the Safety panel, then jog that joint back (Jog panel) or guide it back towards its "
+                "range (Drag panel).");
     case Family::kBox:
       return tr("Press Recover in the Safety panel, then Power on in the Power panel, then guide or jog the TCP back "
                 "into the box (the Safety box panel shows it).");
@@ -213,11 +213,8 @@ OperatorMessage errorBit(int bit, const RobotView& view) {
       todo << remedy(e);
     }
     m.what = what.join(QStringLiteral("; ")) + tr(". The robot stopped.");
-    // Every joint's way back, and Recover once at the end.
-    const QString recover = tr(", then press Recover in the Safety panel");
-    for (QString& t : todo)
-      if (t.endsWith(recover)) t.chop(recover.size());
-    m.todo = todo.join(QStringLiteral(". ")) + recover + QLatin1Char('.');
+    // Recover first (the robot moves only without errors), then every joint's way back.
+    m.todo = tr("Press Recover in the Safety panel, then bring it back. %1.").arg(todo.join(QStringLiteral(". ")));
   }
   if ((family == Family::kBox || family == Family::kCommandBox) && view.settings) {
     if (const auto box = tcpOutsideBox(state.toolTobase_pos_m, view.settings->box)) {
@@ -251,10 +248,7 @@ std::vector<OperatorMessage> activeProblems(const RobotView& view) {
   // Beyond a limit without the bit that says so (e.g. after Recover, before moving back).
   if (!errors[0] && !errors[7] && view.spec) {
     for (const JointExcursion& e : jointsBeyondLimits(live.state.q, live.dof, view.settings, *view.spec)) {
-      const QString recover = tr(", then press Recover in the Safety panel");
-      QString todo = remedy(e);
-      if (todo.endsWith(recover)) todo.chop(recover.size());
-      out.push_back({tr("J%1 outside its range").arg(e.joint + 1), describe(e), todo, {}, false});
+      out.push_back({tr("J%1 outside its range").arg(e.joint + 1), describe(e), remedy(e), {}, false});
     }
   }
   if (!errors[1] && !errors[8] && view.settings) {

@@ -176,7 +176,7 @@ struct Controller::Impl {
   void ratchetAllowances();       // every cycle, after the physics
   void widenIkLimitsToAllowance();  // the IK may return solutions as far out as the allowance
   TcpLinearization tcpLinearization() const;
-  JointVector dragWallTorque(const TcpLinearization& tcp) const;
+  JointVector dragWallTorque(const TcpLinearization& tcp) const;  // walls and the guiding speed limit
   void holdAtDragWalls(const TcpLinearization& tcp, const FrozenDynamics& physical);
 
   // ---- controller_cycle.cpp

@@ -43,7 +43,7 @@ TcpLinearization Controller::Impl::tcpLinearization() const {
 JointVector Controller::Impl::dragWallTorque(const TcpLinearization& tcp) const {
   JointVector tau = jointWallTorque(wall_onsets, params, plant);
   if (settings.safety_box.active) tau += boxWallTorque(wall_onsets, settings.safety_box, tcp, plant);
-  return tau;
+  return tau + guidingSpeedTorque(params, limits.velocity, tcp, plant);
 }
 
 void Controller::Impl::holdAtDragWalls(const TcpLinearization& tcp, const FrozenDynamics& physical) {

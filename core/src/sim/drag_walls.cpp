@@ -84,6 +84,25 @@ JointVector jointWallTorque(const WallOnsets& onsets, const PlantParams& params,
   return tau;
 }
 
+JointVector guidingSpeedTorque(const PlantParams& params, const JointVector& velocity_limits,
+                               const TcpLinearization& tcp, const PlantState& measured) {
+  JointVector tau = JointVector::Zero();
+  for (int i = 0; i < params.dof; ++i) {
+    const double onset = kGuidingSpeedOnset * velocity_limits[i];
+    const double excess = std::abs(measured.dq[i]) - onset;
+    if (excess <= 0) continue;
+    const double span = (kGuidingSpeedFull - kGuidingSpeedOnset) * velocity_limits[i];
+    tau[i] = -std::copysign(params.peak_torque[i] * std::min(1.0, excess / span), measured.dq[i]);
+  }
+  const Eigen::Vector3d v = tcp.jv * measured.dq;
+  const double speed = v.norm();
+  if (speed > kGuidingTcpSpeedOnset) {
+    const double share = std::min(1.0, (speed - kGuidingTcpSpeedOnset) / (kGuidingTcpSpeedFull - kGuidingTcpSpeedOnset));
+    tau -= tcp.jv.transpose() * (v / speed * (kGuidingTcpForce * share));
+  }
+  return tau;
+}
+
 JointVector boxWallTorque(const WallOnsets& onsets, const SafetyBox& box, const TcpLinearization& tcp,
                           const PlantState& measured) {
   constexpr double kStiffness = kBoxWallForce / kBoxWallWidth;      // N/m

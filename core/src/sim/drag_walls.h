@@ -2,7 +2,8 @@
 // before each joint's allowed limit and the last few centimetres inside each face of the active
 // safety box, added to the drag law; and, when a pull exceeds what the motors can resist, the
 // joint's brake (or, for the box, the minimal joint-velocity correction) holds the arm at the wall.
-// Numbers and reasons: docs/simulator_controller.md, "Hand guiding (drag)". Allocation-free.
+// Also the guiding speed limit: a hard push saturates the arm's speed instead of tripping the
+// velocity monitors. Numbers and reasons: docs/simulator_controller.md, "Hand guiding (drag)". Allocation-free.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -24,6 +25,16 @@ inline constexpr double kBoxWallWidth = 0.05;        // m
 inline constexpr double kBoxWallForce = 200.0;       // N at the face
 inline constexpr double kBoxWallReturnSpeed = 0.2;   // m/s
 inline constexpr double kBoxHoldInset = 0.001;       // m
+
+// Guiding speed limit: above kGuidingSpeedOnset of a joint's rated speed a damping sets in that
+// reaches the motor's peak torque at kGuidingSpeedFull of it, so a push the motor can resist
+// saturates the joint's speed below the velocity monitor's threshold (bit 3, 1.1 x rated) instead of
+// stopping the arm. The TCP's speed is limited the same way (bit 4 watches it in Cartesian guiding).
+inline constexpr double kGuidingSpeedOnset = 0.6;    // x rated joint speed
+inline constexpr double kGuidingSpeedFull = 0.9;     // x rated joint speed
+inline constexpr double kGuidingTcpSpeedOnset = 0.5; // m/s
+inline constexpr double kGuidingTcpSpeedFull = 1.0;  // m/s
+inline constexpr double kGuidingTcpForce = 300.0;    // N at kGuidingTcpSpeedFull
 
 // Where each wall's spring begins. Normally a wall's width before the allowed limit; when hand
 // guiding starts deeper inside a wall than that, the spring begins where the arm is (it never
@@ -54,6 +65,11 @@ JointVector jointWallTorque(const WallOnsets& onsets, const PlantParams& params,
 // The box walls' force at the TCP, mapped to joint torques (jv^T F). box must be active.
 JointVector boxWallTorque(const WallOnsets& onsets, const SafetyBox& box, const TcpLinearization& tcp,
                           const PlantState& measured);
+
+// The guiding speed limit's torque (above): per joint against velocity_limits (rad/s), and along
+// the TCP's velocity (tcp.jv dq) mapped to joint torques.
+JointVector guidingSpeedTorque(const PlantParams& params, const JointVector& velocity_limits,
+                               const TcpLinearization& tcp, const PlantState& measured);
 
 // After an integration sub-step, the arm is held at the walls like at rigid stops. Box faces (the
 // TCP at or beyond the plane kBoxHoldInset inside a face) and joints (at or beyond their allowed
