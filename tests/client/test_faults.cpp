@@ -4,11 +4,18 @@
 // malformed datagrams (counted, no crash); controller death mid-motion; a wrong-size RobotState.
 #include <QtTest>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
+#include <vector>
 
 #include <xmate/robot.h>
 
 #include "client/connection.h"
+#include "client/tcp_session.h"
+#include "net/tcp_socket.h"
+#include "net/udp_socket.h"
 #include "client/error_bits.h"
 #include "client_test_support.h"
 
@@ -94,6 +101,8 @@ class TestFaults : public QObject {
   void corruptedStatesAreCountedAndSkipped();
   void wrongSizeStateIsVersionMismatch();
   void controllerDeathMidMotion();
+  void tcpTimeoutBeforeTheAnswerKeepsTheSession();
+  void tcpTimeoutMidFrameClosesTheSession();
 };
 
 void TestFaults::commandedVelocityJump() {
@@ -342,6 +351,74 @@ void TestFaults::controllerDeathMidMotion() {
   server->start();
   QVERIFY(eventually([&] { return robot->reconnect(); }));
   QCOMPARE(robot->getMotorState(), 1);
+}
+
+// A controller that answers the request only with the first `bytes` bytes of the frame (0: nothing),
+// then stays silent; the TcpSession under test asks it for the motor state with a 150 ms timeout.
+namespace {
+struct HalfAnswer {
+  xmate::net::TcpListener listener;
+  std::thread thread;
+  std::atomic<bool> done{false};
+  explicit HalfAnswer(size_t bytes) {
+    listener.listen("127.0.0.1", 0);
+    thread = std::thread([this, bytes] {
+      auto peer = listener.accept(5000);
+      if (!peer) return;
+      uint8_t header[xmate::protocol::kFrameHeaderSize];
+      if (peer->readExact(header, sizeof header, 2000) != xmate::net::IoResult::kOk) return;
+      const xmate::protocol::FrameHeader request = xmate::protocol::decodeFrameHeader(header);
+      std::vector<uint8_t> payload(request.length);
+      peer->readExact(payload.data(), payload.size(), 2000);
+      const uint32_t sequence = request.sequence;
+      const xmate::protocol::Frame answer =
+          xmate::protocol::encodeFrame(sequence, xmate::protocol::EmptyRequest{xmate::protocol::Command::kGetMotorState});
+      if (bytes > 0) peer->sendAll(answer.data(), std::min(bytes, answer.size()), 1000);
+      while (!done.load()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    });
+  }
+  ~HalfAnswer() {
+    done.store(true);
+    thread.join();
+  }
+};
+
+std::vector<uint8_t> askMotorState(xmate::client::TcpSession& session) {
+  return session.exchange(
+      "getMotorState",
+      [](uint32_t sequence) {
+        return xmate::protocol::encodeFrame(sequence,
+                                            xmate::protocol::EmptyRequest{xmate::protocol::Command::kGetMotorState});
+      },
+      xmate::protocol::Command::kGetMotorState, 150);
+}
+}  // namespace
+
+void TestFaults::tcpTimeoutBeforeTheAnswerKeepsTheSession() {
+  HalfAnswer controller(0);
+  xmate::client::TcpSession session;
+  session.open(xmate::net::makeEndpoint("127.0.0.1", controller.listener.localPort()), 2000);
+  try {
+    askMotorState(session);
+    QFAIL("no answer, yet no timeout");
+  } catch (const xmate::TcpException& e) {
+    QVERIFY2(QString(e.what()).contains("no response within 150 ms"), e.what());
+  }
+  QVERIFY(session.isOpen());  // no byte of the answer was read: the stream is still aligned
+}
+
+void TestFaults::tcpTimeoutMidFrameClosesTheSession() {
+  HalfAnswer controller(3);  // half of the 6-byte header
+  xmate::client::TcpSession session;
+  session.open(xmate::net::makeEndpoint("127.0.0.1", controller.listener.localPort()), 2000);
+  try {
+    askMotorState(session);
+    QFAIL("half a frame, yet no error");
+  } catch (const xmate::TcpException& e) {
+    QVERIFY2(QString(e.what()).contains("stopped in the middle of a frame"), e.what());
+    QVERIFY2(QString(e.what()).contains("reconnect()"), e.what());
+  }
+  QVERIFY(!session.isOpen());  // every later answer would have been read misaligned
 }
 
 QTEST_APPLESS_MAIN(TestFaults)

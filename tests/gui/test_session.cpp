@@ -16,7 +16,7 @@ using rci::ui::test::unusedPort;
 namespace {
 
 // Holds the joints still until the session asks to stop (or ~60 s of cycles pass), then finishes.
-void holdUntilStopped(Session& session, xmate::Robot& robot, int* cycles) {
+void holdUntilStopped(const rci::ui::MotionToken& token, xmate::Robot& robot, int* cycles) {
   using RCI::robot::StartMoveRequest;
   robot.startMove(StartMoveRequest::ControllerMode::kJointPosition,
                   StartMoveRequest::MotionGeneratorMode::kJointPosition);
@@ -26,7 +26,7 @@ void holdUntilStopped(Session& session, xmate::Robot& robot, int* cycles) {
     if (first) q_hold = state.q, first = false;
     ++*cycles;
     xmate::JointPositions command{q_hold};
-    if (session.stopRequested() || *cycles > 60000) return xmate::MotionFinished(command);
+    if (token.stopRequested() || *cycles > 60000) return xmate::MotionFinished(command);
     return command;
   });
 }
@@ -132,7 +132,7 @@ void TestSession::runsMotion() {
   powerOn();
   QSignalSpy started(session_.get(), &Session::motionStarted);
   QSignalSpy finished(session_.get(), &Session::motionFinished);
-  session_->runMotion("MOVEJ", [](xmate::Robot& robot) {
+  session_->runMotion("MOVEJ", [](xmate::Robot& robot, const rci::ui::MotionToken&) {
     const std::array<double, 7> start = robot.receiveRobotState().q;
     std::array<double, 7> target = start;
     target[0] += 0.05;
@@ -152,8 +152,8 @@ void TestSession::refusesSecondMotion() {
   int cycles = 0;
   QSignalSpy commands(session_.get(), &Session::commandFinished);
   QSignalSpy finished(session_.get(), &Session::motionFinished);
-  session_->runMotion("hold", [&](xmate::Robot& robot) { holdUntilStopped(*session_, robot, &cycles); });
-  session_->runMotion("second", [](xmate::Robot&) {});
+  session_->runMotion("hold", [&](xmate::Robot& robot, const rci::ui::MotionToken& token) { holdUntilStopped(token, robot, &cycles); });
+  session_->runMotion("second", [](xmate::Robot&, const rci::ui::MotionToken&) {});
   QCOMPARE(commands.count(), 1);
   QCOMPARE(commands.first().at(0).toString(), QString("second"));
   QVERIFY(commands.first().at(2).toString().contains("already running"));
@@ -166,7 +166,7 @@ void TestSession::requestStopEndsMotion() {
   powerOn();
   int cycles = 0;
   QSignalSpy finished(session_.get(), &Session::motionFinished);
-  session_->runMotion("hold", [&](xmate::Robot& robot) { holdUntilStopped(*session_, robot, &cycles); });
+  session_->runMotion("hold", [&](xmate::Robot& robot, const rci::ui::MotionToken& token) { holdUntilStopped(token, robot, &cycles); });
   QTRY_VERIFY_WITH_TIMEOUT(session_->live().sim.motion_active, 20000);
   QVERIFY(!session_->stopRequested());
   session_->requestStop();
@@ -181,7 +181,7 @@ void TestSession::closesCleanly() {
   openSimulator();
   powerOn();
   int cycles = 0;
-  session_->runMotion("hold", [&](xmate::Robot& robot) { holdUntilStopped(*session_, robot, &cycles); });
+  session_->runMotion("hold", [&](xmate::Robot& robot, const rci::ui::MotionToken& token) { holdUntilStopped(token, robot, &cycles); });
   QSignalSpy closed(session_.get(), &Session::closed);
   QSignalSpy ticks(session_.get(), &Session::tick);
   session_->close();

@@ -115,6 +115,7 @@ class TestProgram : public QObject {
   void badFieldsAreNamed();
   void robotMismatchIsRefused();
   void atomicSaveReplacesAndLeavesNoTemporary();
+  void atomicSaveKeepsPermissionsAndSymlinks();
   void failedSaveKeepsThePreviousFile();
   void truncatedInputsNeverCrash();
   void garbledInputsNeverCrash();
@@ -302,6 +303,29 @@ void TestProgram::atomicSaveReplacesAndLeavesNoTemporary() {
   writeFileAtomically(path, "new contents");
   QCOMPARE(QString::fromStdString(readFile(path)), QString("new contents"));
   QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"p.json"});
+}
+
+void TestProgram::atomicSaveKeepsPermissionsAndSymlinks() {
+  QTemporaryDir dir;
+  const QString real = dir.path() + "/programs/p.json";
+  QVERIFY(QDir(dir.path()).mkdir("programs"));
+  writeFileAtomically(real.toStdString(), "old");
+  // A program shared in a lab group: read-write for the group, nothing for others.
+  QVERIFY(QFile::setPermissions(real, QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup | QFile::WriteGroup));
+  const QFile::Permissions before = QFile::permissions(real);
+  // The operator opens it through a link in another folder (relative target).
+  const QString link = dir.path() + "/current.json";
+  QVERIFY(QFile::link("programs/p.json", link));
+  writeFileAtomically(link.toStdString(), "new contents");
+  QVERIFY2(QFileInfo(link).isSymLink(), "the link was replaced by a file");
+  QCOMPARE(QString::fromStdString(readFile(real.toStdString())), QString("new contents"));
+  QCOMPARE(QFile::permissions(real), before);
+  QCOMPARE(QDir(dir.path() + "/programs").entryList(QDir::Files), QStringList{"p.json"});
+  // A new file gets ordinary permissions (not mkstemp's 0600).
+  const QString fresh = dir.path() + "/fresh.json";
+  writeFileAtomically(fresh.toStdString(), "x");
+  QVERIFY(QFile::permissions(fresh) & QFile::ReadOwner);
+  QVERIFY(QFile::permissions(fresh) & QFile::WriteOwner);
 }
 
 void TestProgram::failedSaveKeepsThePreviousFile() {

@@ -25,10 +25,15 @@ inline constexpr double kJogRotationAccel = 1.0;         // rad/s^2
 inline constexpr double kJogJerkPerAccel = 10.0;         // jerk = 10/s x acceleration (0.1 s ramps)
 inline constexpr double kJogLimitMargin = 1.0 / 57.29577951308232;  // stay 1 deg inside a joint limit
 
+// A jog ends (ramps down) when the window's display tick is older than this: the GUI thread may
+// not see the button's release (docs/reliability.md, "Stop and disconnect").
+inline constexpr double kJogDeadManMs = 150.0;
+
 // Flags shared between the GUI (writes) and the real-time callback (reads).
 struct JogFlags {
   std::atomic<bool> held{true};   // the jog button is still pressed
   std::atomic<bool> stop{false};  // stop now (session stop request, panel closing)
+  std::atomic<bool> window_silent{false};  // the dead-man ended it (set by the callback)
 };
 
 struct JointLimitsRad {

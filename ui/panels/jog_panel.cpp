@@ -1,6 +1,8 @@
 // Jog panel: the buttons and speed slider; the motion itself is in jog_motion (real-time side).
 #include "panels/jog_panel.h"
 
+#include <stdexcept>
+
 #include <QEvent>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -80,7 +82,7 @@ QWidget* JogPanel::makeJointGroup() {
   for (int i = 0; i < 7; ++i) {
     auto* label = new QLabel(QStringLiteral("J%1").arg(i + 1), group);
     auto* minus = makeJogButton(QStringLiteral("jog.joint%1.minus").arg(i + 1), QStringLiteral("−"),
-                                tr("J%1 -").arg(i + 1), false, i, -1, group);
+                                tr("J%1 \u2212").arg(i + 1), false, i, -1, group);
     auto* plus = makeJogButton(QStringLiteral("jog.joint%1.plus").arg(i + 1), QStringLiteral("+"),
                                tr("J%1 +").arg(i + 1), false, i, +1, group);
     auto* angle = new QLabel(group);
@@ -108,7 +110,7 @@ QWidget* JogPanel::makeCartesianGroup() {
     const int row = i % 3, column = 3 * (i / 3);
     grid->addWidget(new QLabel(axis, group), row, column);
     grid->addWidget(makeJogButton(QStringLiteral("jog.cart.%1.minus").arg(axis), QStringLiteral("−"),
-                                  tr("TCP %1 -").arg(axis), true, i, -1, group),
+                                  tr("TCP %1 \u2212").arg(axis), true, i, -1, group),
                     row, column + 1);
     grid->addWidget(makeJogButton(QStringLiteral("jog.cart.%1.plus").arg(axis), QStringLiteral("+"),
                                   tr("TCP %1 +").arg(axis), true, i, +1, group),
@@ -128,13 +130,18 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
   const OperatorSettings& o = session().operatorSettings();
   const JointLimitsRad limits = jogLimits(model, o.soft_limits_enabled, o.soft_lower_deg, o.soft_upper_deg);
   const double speed = speedFraction();
-  Session* s = &session();
   showStatus(tr("jog %1 ...").arg(what), false);
   // The job runs on the session's motion worker; the callbacks on the client's real-time thread.
   // GUI -> real time: the atomics of JogFlags (shared_ptr keeps them alive for both sides).
-  session().runMotion(title() + QStringLiteral(": ") + what, [=, &model](xmate::Robot& robot) {
-    auto stop_watch = [flags, s] {
-      if (s->stopRequested()) flags->stop.store(true, std::memory_order_relaxed);
+  session().runMotion(title() + QStringLiteral(": ") + what, [=, &model](xmate::Robot& robot, const MotionToken& token) {
+    // Stop requests end the jog; so does a window that stopped responding (dead-man: the GUI thread
+    // did not tick for kJogDeadManMs, so a button release might go unseen) -- the jog ramps down.
+    auto stop_watch = [flags, &token] {
+      if (token.stopRequested()) flags->stop.store(true, std::memory_order_relaxed);
+      if (token.windowSilenceMs() > kJogDeadManMs) {
+        flags->held.store(false, std::memory_order_relaxed);
+        flags->window_silent.store(true, std::memory_order_relaxed);
+      }
     };
     if (cartesian) {
       CartesianJog jog(axis, direction, speed, model.dof, limits, *flags);
@@ -153,6 +160,9 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
         return jog.next(state);
       }));
     }
+    if (flags->window_silent.load())
+      throw std::runtime_error("the jog stopped because the window did not respond for more than 150 ms (it could "
+                               "not have seen the button's release); press and hold the button again");
   });
 }
 

@@ -33,6 +33,9 @@ PanelBase::PanelBase(Session& session, const QString& key, const QString& title,
     updateSendWidgets();
     sessionOpened();
   });
+  // While the session re-opens a silent controller, nothing can be sent.
+  connect(&session_, &Session::reconnecting, this, [this] { updateSendWidgets(); });
+  connect(&session_, &Session::reconnected, this, [this] { updateSendWidgets(); });
   connect(&session_, &Session::closed, this, [this](const QString&) {
     pending_.clear();
     updateSendWidgets();
@@ -52,6 +55,12 @@ void PanelBase::send(const QString& action, std::function<void(xmate::Robot&)> j
   const QString label = title_ + QStringLiteral(": ") + action;
   if (!session_.isOpen()) {
     showStatus(action + QStringLiteral(": not connected -- connect to a robot or the simulator first."), true);
+    return;
+  }
+  if (session_.isReconnecting()) {
+    showStatus(action + tr(": not sent -- the connection is being re-established; try again when the status bar "
+                           "shows the robot again."),
+               true);
     return;
   }
   pending_.push_back({label, std::move(on_success)});
@@ -74,11 +83,12 @@ void PanelBase::showFailure(const QString& action, const QString& message) {
 
 void PanelBase::addSendWidget(QWidget* widget) {
   send_widgets_.append(widget);
-  widget->setEnabled(session_.isOpen());
+  widget->setEnabled(session_.isOpen() && !session_.isReconnecting());
 }
 
 void PanelBase::updateSendWidgets() {
-  for (auto* w : send_widgets_) w->setEnabled(session_.isOpen());
+  const bool usable = session_.isOpen() && !session_.isReconnecting();
+  for (auto* w : send_widgets_) w->setEnabled(usable);
 }
 
 void PanelBase::saveValue(const QString& name, const QVariant& value) const {

@@ -58,7 +58,9 @@ void ProgramPanel::resumeClicked() {
 }
 
 void ProgramPanel::stopClicked() {
-  if (running_) run_slot_->executor.stop();
+  if (!running_) return;
+  run_slot_->executor.stop();
+  session().requestStop();  // the same token the toolbar's Stop motion sets
 }
 
 void ProgramPanel::gotoClicked() {
@@ -95,8 +97,10 @@ void ProgramPanel::startRun(const xmate::teach::Program& program, bool single_st
   showStatus(action + QStringLiteral(" ..."), false);
   updateButtons();
   std::shared_ptr<RunSlot> slot = run_slot_;
-  session().runMotion(run_label_, [slot, program, options](xmate::Robot& robot) {
-    slot->report = slot->executor.run(robot, program, options);
+  session().runMotion(run_label_, [slot, program, options](xmate::Robot& robot, const MotionToken& token) {
+    xmate::teach::ExecutorOptions with_token = options;
+    with_token.stop_token = &token.stopFlag();  // Stop, disconnect and quit end the run
+    slot->report = slot->executor.run(robot, program, with_token);
   });
 }
 
@@ -222,7 +226,6 @@ void ProgramPanel::resetRunDisplay() {
 
 void ProgramPanel::updateProgress() {
   if (!running_) return;
-  if (session().stopRequested()) run_slot_->executor.stop();  // the window's Stop
   const xmate::teach::Progress p = run_slot_->executor.progress();
   run_state_->setText(QString::fromLatin1(xmate::teach::runStateName(p.state)));
   if (p.instruction < 0) return;
@@ -258,8 +261,11 @@ void ProgramPanel::sessionOpened() {
 }
 
 void ProgramPanel::sessionClosed() {
-  // A run cannot outlive its session: the session stopped the motion worker's robot.
+  // A run cannot outlive its session: the session's stop token ends it; stop the executor too, and
+  // leave it to its job -- the next run gets a fresh executor even if the old one is still ending.
   if (running_) {
+    run_slot_->executor.stop();
+    run_slot_ = std::make_shared<RunSlot>();
     running_ = false;
     run_label_.clear();
     model_->setCurrent(-1);

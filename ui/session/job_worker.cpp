@@ -1,66 +1,98 @@
-// JobWorker: the queue-and-thread behind the Session's command and motion workers.
+// JobWorker: the queue-and-thread behind the Session's command and motion workers (job_worker.h).
 #include "session/job_worker.h"
 
 #include "net/realtime.h"
 
 namespace rci::ui {
 
-JobWorker::JobWorker(const char* thread_name, std::function<void()> idle, std::chrono::milliseconds idle_period)
-    : idle_(std::move(idle)), idle_period_(idle_period), name_(thread_name) {
-  thread_ = std::thread([this] { loop(); });
+JobWorker::JobWorker(const char* thread_name, std::function<void()> idle, std::chrono::milliseconds idle_period) {
+  // Hand-off: the thread gets its own reference to the shared state, the idle job by value.
+  thread_ = std::thread([state = state_, idle = std::move(idle), idle_period, thread_name] {
+    loop(state, idle, idle_period, thread_name);
+  });
 }
 
-JobWorker::~JobWorker() { stop(); }
+JobWorker::~JobWorker() { stop(kDestructorWait); }
 
-void JobWorker::post(std::function<void()> job) {
+void JobWorker::post(std::function<void()> job, std::function<void()> dropped) {
   {
-    // Hand-off: the job queue, guarded by mutex_, signalled by wake_.
-    std::lock_guard lock(mutex_);
-    if (quit_) return;
-    jobs_.push_back(std::move(job));
+    // Hand-off: the job queue, guarded by State::mutex, signalled by State::wake.
+    std::unique_lock lock(state_->mutex);
+    if (state_->quit) {
+      lock.unlock();
+      if (dropped) dropped();
+      return;
+    }
+    state_->jobs.push_back({std::move(job), std::move(dropped)});
   }
-  wake_.notify_one();
+  state_->wake.notify_one();
 }
 
-void JobWorker::stop() {
+bool JobWorker::busy() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->running;
+}
+
+bool JobWorker::waitIdle(std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(state_->mutex);
+  return state_->done.wait_for(lock, timeout, [this] {
+    return state_->ended || (!state_->running && state_->jobs.empty());
+  });
+}
+
+bool JobWorker::stop(std::chrono::milliseconds timeout) {
+  std::deque<Queued> discarded;
+  bool finished = false;
   {
-    std::lock_guard lock(mutex_);
-    quit_ = true;
-    jobs_.clear();
+    std::unique_lock lock(state_->mutex);
+    state_->quit = true;
+    discarded.swap(state_->jobs);
+    state_->wake.notify_one();
+    finished = state_->done.wait_for(lock, timeout, [this] { return state_->ended; });
   }
-  wake_.notify_one();
-  if (thread_.joinable()) thread_.join();
+  for (Queued& q : discarded)
+    if (q.dropped) q.dropped();
+  if (!thread_.joinable()) return true;
+  if (finished) {
+    thread_.join();
+    return true;
+  }
+  thread_.detach();  // it still holds State; whatever its job holds is the caller's to keep alive
+  return false;
 }
 
-// Waits until a job is queued, the idle period passed, or stop() was called. Returns false on stop.
-bool JobWorker::waitForWork(std::unique_lock<std::mutex>& lock) {
-  auto ready = [this] { return quit_ || !jobs_.empty(); };
-  if (idle_) {
-    wake_.wait_for(lock, idle_period_, ready);
-  } else {
-    wake_.wait(lock, ready);
-  }
-  return !quit_;
-}
-
-void JobWorker::loop() {
-  xmate::net::nameThisThread(name_);
-  std::unique_lock lock(mutex_);
-  while (waitForWork(lock)) {
-    if (!jobs_.empty()) {
-      auto job = std::move(jobs_.front());
-      jobs_.pop_front();
-      lock.unlock();
-      job();
-      lock.lock();
-      if (!jobs_.empty() || quit_) continue;  // drain the queue before the next idle poll
+void JobWorker::loop(const std::shared_ptr<State>& state, const std::function<void()>& idle,
+                     std::chrono::milliseconds idle_period, const char* name) {
+  xmate::net::nameThisThread(name);
+  std::unique_lock lock(state->mutex);
+  auto ready = [&] { return state->quit || !state->jobs.empty(); };
+  for (;;) {
+    if (idle) {
+      state->wake.wait_for(lock, idle_period, ready);
+    } else {
+      state->wake.wait(lock, ready);
     }
-    if (idle_ && !quit_) {
+    if (state->quit) break;
+    if (!state->jobs.empty()) {
+      Queued next = std::move(state->jobs.front());
+      state->jobs.pop_front();
+      state->running = true;
       lock.unlock();
-      idle_();
+      next.job();
+      next = {};  // release what the job captured before reporting it done
+      lock.lock();
+      state->running = false;
+      state->done.notify_all();
+      if (!state->jobs.empty() || state->quit) continue;  // drain the queue before the next idle poll
+    }
+    if (idle) {
+      lock.unlock();
+      idle();
       lock.lock();
     }
   }
+  state->ended = true;
+  state->done.notify_all();
 }
 
 }  // namespace rci::ui

@@ -2,10 +2,14 @@
 // threads, and refreshes LiveState at 30 Hz on the GUI thread (session.h; DESIGN.md "Threads").
 #include "session/session.h"
 
+#include <algorithm>
+
 #include <QElapsedTimer>
 #include <QMetaObject>
 #include <QTimer>
 
+#include <chrono>
+#include <cstdio>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -28,6 +32,11 @@ std::pair<bool, QString> runCatching(const std::function<void(xmate::Robot&)>& j
 
 constexpr int kTickMs = 33;            // ~30 Hz display rate
 constexpr qint64 kSilenceLimitMs = 1000;  // no state for this long: the controller is gone
+
+int64_t steadyNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
 
 // Threads that open or tear down links; joined when done or at the latest by joinAll().
 class BackgroundThreads {
@@ -90,6 +99,7 @@ struct Session::Impl {
   void startReconnect();
   void finishReconnect(uint64_t generation, bool ok);
   void restartWatchdog();
+  void forgetSentSettings();
 
   Session& self;
   SessionTarget target;
@@ -102,8 +112,6 @@ struct Session::Impl {
   ProgramOverlay overlay;
   std::array<double, 16> model_tool{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   std::array<bool, 6> recorded_do{};
-  std::atomic<bool> stop_requested{false};
-  std::atomic<bool> motion_busy{false};
   QTimer timer;
   std::vector<xmate::client::StateSample> batch = std::vector<xmate::client::StateSample>(
       xmate::client::SampleRing::capacity());
@@ -147,6 +155,7 @@ void Session::Impl::finishOpen(uint64_t my_generation, std::shared_ptr<Link> ope
     return;
   }
   link = std::move(opened);
+  forgetSentSettings();
   live = LiveState{};
   live.connected = true;
   live.simulated = link->server != nullptr;
@@ -178,7 +187,7 @@ void Session::Impl::close(const QString& reason, bool emit_always) {
   reconnecting = false;
   timer.stop();
   if (link) {
-    if (motion_busy.load()) stop_requested.store(true);
+    link->motion.stop.store(true);  // at once: the motion starts its ramp down while the teardown waits
     teardown(std::move(link));
     link.reset();
   }
@@ -189,7 +198,15 @@ void Session::Impl::close(const QString& reason, bool emit_always) {
 // Tears the link down on a background thread so a slow controller never blocks the window.
 void Session::Impl::teardown(std::shared_ptr<Link> old) {
   // Hand-off: the link's ownership moves into the new thread (std::thread start synchronises).
-  background.start([old = std::move(old)] { shutdownLink(*old); });
+  background.start([old = std::move(old)]() mutable {
+    if (!shutdownLink(*old)) {
+      // A worker did not end in time: its abandoned thread may still use the link, so keep it.
+      std::fprintf(stderr, "rci-studio: a worker of the closed session did not end within %lld ms; it was "
+                           "abandoned (the connection is closed)\n",
+                   static_cast<long long>((kMotionStopWait + kWorkerEndWait).count()));
+      new std::shared_ptr<Link>(std::move(old));  // deliberately leaked
+    }
+  });
 }
 
 void Session::Impl::applyPoll(uint64_t my_generation, const PollResult& poll) {
@@ -217,7 +234,7 @@ void Session::Impl::refreshLive() {
   }
   live.realtime = connection.realtimeStatus();
   live.timing = connection.timing();
-  live.motion_running = motion_busy.load();
+  live.motion_running = link->motion.busy.load();
   const qint64 now = clock.elapsed();
   const uint64_t count = live.timing.counters.states_received;
   if (count < rate_start_count) rate_start_count = count;  // counters restart with a new session
@@ -242,6 +259,23 @@ bool Session::Impl::controllerSilent() {
     last_progress_ms = now;
   }
   return now - last_progress_ms > kSilenceLimitMs;
+}
+
+// What the window sent to an earlier session (safety box, soft limits, collision thresholds) is
+// not known to hold for this one: a rebooted or another controller starts with its own. The
+// views, jog and pre-flight stop using it, and the event log says to send it again.
+void Session::Impl::forgetSentSettings() {
+  const bool had = settings.box.enabled || settings.soft_limits_enabled ||
+                   std::any_of(settings.collision_thresholds.begin(), settings.collision_thresholds.end(),
+                               [](double t) { return t != 0; });
+  settings = OperatorSettings{};
+  emit self.operatorSettingsChanged();
+  if (had)
+    emit self.eventReported(
+        Session::EventLevel::kWarning,
+        QStringLiteral("The safety box, soft limits and collision thresholds sent before are not shown or used any "
+                       "more: the controller may have restarted with its own. Apply them again in their panels."),
+        QString());
 }
 
 void Session::Impl::restartWatchdog() {
@@ -273,11 +307,13 @@ void Session::Impl::finishReconnect(uint64_t my_generation, bool ok) {
     return;
   }
   restartWatchdog();
+  forgetSentSettings();  // a controller that went silent has most likely rebooted
   emit self.reconnected();
 }
 
 void Session::Impl::onTick() {
   if (!link) return;
+  link->motion.heartbeat_ns.store(steadyNs(), std::memory_order_relaxed);
   if (!reconnecting) {
     drainSamples();
     refreshLive();
@@ -346,36 +382,44 @@ void Session::run(const QString& label, std::function<void(xmate::Robot&)> job) 
   });
 }
 
-void Session::runMotion(const QString& label, std::function<void(xmate::Robot&)> job) {
+void Session::runMotion(const QString& label, MotionJob job) {
   if (!impl_->link) {
     emit commandFinished(label, false, QStringLiteral("not connected: connect to a robot or the simulator first"));
     return;
   }
-  if (impl_->motion_busy.exchange(true)) {
+  Link* link = impl_->link.get();
+  MotionFlags& flags = link->motion;
+  if (flags.busy.exchange(true)) {
     emit commandFinished(label, false, QStringLiteral("a motion is already running"));
     return;
   }
-  impl_->stop_requested.store(false);
+  flags.stop.store(false);
+  flags.heartbeat_ns.store(steadyNs(), std::memory_order_relaxed);
   impl_->live.motion_running = true;
-  xmate::Robot* robot = impl_->link->robot.get();
+  xmate::Robot* robot = link->robot.get();
   const uint64_t my_generation = impl_->generation;
   emit motionStarted(label);
-  // Hand-off: the motion worker's job queue (JobWorker::post); motion_busy / stop_requested are
-  // atomics shared with the job and the real-time thread's callback.
-  impl_->link->motions->post([this, robot, my_generation, label, job = std::move(job)] {
-    const auto [ok, message] = runCatching(job, *robot);
-    impl_->stop_requested.store(false);
-    impl_->motion_busy.store(false);
-    // Hand-off: Qt queued invocation of the result to the GUI thread.
+  // Hand-off: the result goes to the GUI thread by a Qt queued invocation; busy is cleared first.
+  auto finish = [this, &flags, my_generation, label](bool ok, const QString& message) {
+    flags.busy.store(false);
     QMetaObject::invokeMethod(
         this,
         [this, my_generation, label, ok, message] {
           if (my_generation != impl_->generation) return;
-          impl_->live.motion_running = impl_->motion_busy.load();
+          impl_->live.motion_running = impl_->link && impl_->link->motion.busy.load();
           emit motionFinished(label, ok, message);
         },
         Qt::QueuedConnection);
-  });
+  };
+  // Hand-off: the motion worker's job queue (JobWorker::post). The link (and so `flags`) outlives
+  // the job: shutdownLink joins the worker before it frees the link, or leaks the link.
+  link->motions->post(
+      [robot, &flags, finish, job = std::move(job)] {
+        const MotionToken token(flags.stop, flags.heartbeat_ns);
+        const auto [ok, message] = runCatching([&](xmate::Robot& r) { job(r, token); }, *robot);
+        finish(ok, message);
+      },
+      [finish] { finish(false, QStringLiteral("not started: the connection closed first")); });
 }
 
 void Session::reportEvent(EventLevel level, const QString& text, const QString& detail) {
@@ -383,9 +427,15 @@ void Session::reportEvent(EventLevel level, const QString& text, const QString& 
 }
 
 void Session::requestStop() {
-  if (impl_->motion_busy.load()) impl_->stop_requested.store(true);
+  if (impl_->link && impl_->link->motion.busy.load()) impl_->link->motion.stop.store(true);
 }
 
-bool Session::stopRequested() const { return impl_->stop_requested.load() && impl_->motion_busy.load(); }
+bool Session::stopRequested() const {
+  return impl_->link && impl_->link->motion.busy.load() && impl_->link->motion.stop.load();
+}
+
+double MotionToken::windowSilenceMs() const {
+  return double(steadyNs() - heartbeat_ns_->load(std::memory_order_relaxed)) * 1e-6;
+}
 
 }  // namespace rci::ui

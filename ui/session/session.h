@@ -8,6 +8,7 @@
 #include <QString>
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -48,7 +49,7 @@ struct LiveState {
   int safety_stop = 1;                 // 1 none, 2 ESTOP, 3 GSTOP (polled, ~5 Hz)
   std::array<bool, 6> digital_in{};    // polled, ~5 Hz
   std::array<bool, 6> digital_out{};   // as last set through run() (the robot cannot report it)
-  bool motion_running = false;         // a runMotion() job is executing
+  bool motion_running = false;         // a runMotion() job is queued or executing
   xmate::net::RealtimeStatus realtime; // what the client's real-time thread got
   xmate::client::SessionTiming timing; // loop rate, jitter, counters
   double loop_rate_hz = 0;             // states per second over the last second
@@ -77,6 +78,25 @@ struct ProgramOverlay {
   std::vector<QString> labels;               // one per waypoint ("P1", ...)
   std::vector<std::array<double, 3>> path;   // polyline, m
   int selected = -1;                         // index into waypoints, -1 if none
+};
+
+// What a motion job (Session::runMotion) gets besides the robot: its stop token, set by
+// requestStop() and by close / disconnect / quit, and the age of the window's heartbeat (the display
+// tick), so that a motion the operator holds on (jog) ends when the window stops responding.
+// Valid while the job runs; every call is lock-free and real-time safe (any thread).
+class MotionToken {
+ public:
+  MotionToken(const std::atomic<bool>& stop, const std::atomic<int64_t>& heartbeat_ns)
+      : stop_(&stop), heartbeat_ns_(&heartbeat_ns) {}
+  bool stopRequested() const { return stop_->load(std::memory_order_relaxed); }
+  // The flag itself, for xmate::teach::ExecutorOptions::stop_token.
+  const std::atomic<bool>& stopFlag() const { return *stop_; }
+  // Milliseconds since the GUI thread last ran its display tick (~33 ms when the window is healthy).
+  double windowSilenceMs() const;
+
+ private:
+  const std::atomic<bool>* stop_;
+  const std::atomic<int64_t>* heartbeat_ns_;
 };
 
 class Session : public QObject {
@@ -114,9 +134,14 @@ class Session : public QObject {
   // commandFinished(label, true, ""), or (label, false, what()) if it threw. Never blocks.
   void run(const QString& label, std::function<void(xmate::Robot&)> job);
   // Runs a motion (startMove + Control()) on the motion worker; at most one at a time (refused with
-  // commandFinished(label, false, "a motion is already running") otherwise). The job should poll
-  // stopRequested() in its callback and finish smoothly when it is set.
-  void runMotion(const QString& label, std::function<void(xmate::Robot&)> job);
+  // commandFinished(label, false, "a motion is already running") otherwise). The job must poll its
+  // token's stopRequested() -- in its real-time callback and in any wait -- and finish smoothly when
+  // it is set: requestStop(), close(), a lost connection and the window's end all set it. When the
+  // job has not ended 1.5 s after close(), the session sends StopMove and closes the connection
+  // under it (docs/reliability.md, "Stop and disconnect"). motionFinished(label, ...) follows,
+  // unless the session closed meanwhile.
+  using MotionJob = std::function<void(xmate::Robot&, const MotionToken&)>;
+  void runMotion(const QString& label, MotionJob job);
   // The window's record of settings sent (see OperatorSettings). GUI thread only.
   const OperatorSettings& operatorSettings() const;
   // The program overlay of the 3D view. GUI thread only.
@@ -132,8 +157,9 @@ class Session : public QObject {
   // program run); emits eventReported(). detail: the programmer's words, for a tooltip. GUI thread.
   void reportEvent(EventLevel level, const QString& text, const QString& detail = QString());
 
-  void requestStop();                 // sets stopRequested() until the running motion ends
-  bool stopRequested() const;         // any thread
+  // Asks the running motion to stop (its token); at once, on the calling thread. GUI thread.
+  void requestStop();
+  bool stopRequested() const;         // the running motion's token is set. GUI thread.
 
  signals:
   void opened();

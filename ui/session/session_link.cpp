@@ -64,14 +64,29 @@ bool reconnectLink(Link& link) {
   return false;
 }
 
-void shutdownLink(Link& link) {
+bool shutdownLink(Link& link) {
   link.closing.store(true);
-  // The simulator goes first: a motion that does not poll stopRequested() then ends at once (no
-  // states), and queued commands fail fast instead of waiting for their timeouts.
+  link.motion.stop.store(true);
+  // 1. The motion stops by itself (a smooth ramp down) once it sees its token.
+  const bool motion_ended = !link.motions || link.motions->waitIdle(kMotionStopWait);
+  // 2. Not within the wait (a job that does not poll its token, a stalled robot): StopMove.
+  if (!motion_ended && link.robot) {
+    try {
+      link.robot->stopMove();
+    } catch (const std::exception&) {
+      // The controller may be gone already; closing below ends the run anyway.
+    }
+  }
+  // 3. The simulator and the connection close under any job still running: Control() returns
+  // kSessionClosed, TCP requests fail fast instead of waiting for their timeouts.
   if (link.server) link.server->stop();
-  if (link.motions) link.motions->stop();
-  if (link.commands) link.commands->stop();
-  link.robot.reset();  // closes the TCP session and the real-time thread
+  if (link.robot) link.robot->connection().close();
+  bool joined = true;
+  if (link.motions) joined = link.motions->stop(kWorkerEndWait) && joined;
+  if (link.commands) joined = link.commands->stop(kWorkerEndWait) && joined;
+  if (!joined) return false;
+  link.robot.reset();
+  return true;
 }
 
 PollResult pollRobot(xmate::Robot& robot) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <atomic>
 #include <memory>
 #include <string>
@@ -16,6 +17,14 @@
 
 namespace rci::ui {
 
+// The motion worker's shared flags for the session's one motion at a time: set by the GUI thread,
+// read by the job and its real-time callback (lock-free atomics).
+struct MotionFlags {
+  std::atomic<bool> busy{false};          // a runMotion() job is queued or running
+  std::atomic<bool> stop{false};          // the current job's stop token (cleared when one is queued)
+  std::atomic<int64_t> heartbeat_ns{0};   // steady clock of the GUI thread's last display tick
+};
+
 struct Link {
   SessionTarget target;
   std::unique_ptr<xmate::sim::Server> server;  // kSimulator only
@@ -24,14 +33,24 @@ struct Link {
   std::unique_ptr<JobWorker> commands;         // run() jobs and the 5 Hz poll
   std::unique_ptr<JobWorker> motions;          // runMotion() jobs
   std::atomic<bool> closing{false};            // set by shutdownLink: a running reconnect gives up
+  MotionFlags motion;
 };
 
 // Starts the simulator (kSimulator) and connects the robot client. Blocking: call it off the GUI
 // thread. Throws std::runtime_error whose message says what failed and what to do.
 std::unique_ptr<Link> openLink(const SessionTarget& target);
 
-// Stops the workers (the running jobs finish first), disconnects, stops the simulator. Blocking.
-void shutdownLink(Link& link);
+// How long shutdownLink lets a motion end by itself after its stop token was set, before it sends
+// StopMove and closes the connection under it; and how long it then waits for each worker.
+inline constexpr std::chrono::milliseconds kMotionStopWait{1500};
+inline constexpr std::chrono::milliseconds kWorkerEndWait{3000};
+
+// Ends the session: sets the motion's stop token and waits (kMotionStopWait) for the motion to
+// end; if it did not, sends StopMove; then stops the simulator, closes the connection (which ends
+// any Control() and TCP request) and joins the workers (kWorkerEndWait each). Blocking, bounded:
+// returns false when a worker did not end -- its thread was abandoned and the link must then be
+// kept alive (leaked) by the caller, since that thread may still use it.
+bool shutdownLink(Link& link);
 
 // After the controller stopped sending states: opens the session again (the controller rebooted,
 // a cable was re-plugged). Blocking, on the command worker. Gives up when link.closing is set, when

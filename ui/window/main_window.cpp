@@ -246,6 +246,20 @@ void MainWindow::buildMenus() {
   });
   connection->addAction(tr("&Disconnect"), this, [this] { disconnectFromTarget(); });
 
+  // Stop motion: always within reach (toolbar, Connection menu, Esc anywhere in the window). It sets
+  // the running motion's stop token at once: a program ramps down on its path, a jog ramps down.
+  stop_motion_ = new QAction(tr("Stop motion"), this);
+  stop_motion_->setObjectName(QStringLiteral("motion.stop"));
+  stop_motion_->setShortcut(QKeySequence(Qt::Key_Escape));
+  stop_motion_->setShortcutContext(Qt::ApplicationShortcut);
+  stop_motion_->setToolTip(tr("Stop the running motion (program, go to or jog) smoothly on its path (Esc)"));
+  connect(stop_motion_, &QAction::triggered, this, [this] { stopMotion(); });
+  connection->addSeparator();
+  connection->addAction(stop_motion_);
+  bar_->addSeparator();
+  bar_->addAction(stop_motion_);
+  if (auto* button = bar_->widgetForAction(stop_motion_)) button->setObjectName(QStringLiteral("motion.stop.button"));
+
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(bar_->toggleViewAction());
   view->addSeparator();
@@ -312,6 +326,16 @@ void MainWindow::disconnectFromTarget() {
   bar_->setState(ConnectionBar::State::kDisconnected);
   strip_->refresh();
   updateTitle();
+}
+
+void MainWindow::stopMotion() {
+  if (!session_.isOpen()) return;
+  if (!session_.live().motion_running) {
+    log_->addInfo(tr("Stop motion: nothing is moving"));
+    return;
+  }
+  session_.requestStop();
+  log_->addWarning(tr("Stop motion pressed: the running motion ramps down and ends"));
 }
 
 void MainWindow::updateTitle() {

@@ -72,6 +72,8 @@ class MainWindow : public QMainWindow {
   int sideTabBarWidth(Qt::DockWidgetArea area) const;
   void updateTitle();
   void showFullTabNames();
+  // Toolbar / Esc: asks the running motion to stop (Session::requestStop) and logs it.
+  void stopMotion();
 
   Session& session_;
   QWidget* view_ = nullptr;
@@ -79,6 +81,7 @@ class MainWindow : public QMainWindow {
   ConnectionBar* bar_ = nullptr;
   MessageLog* log_ = nullptr;
   StatusStrip* strip_ = nullptr;
+  QAction* stop_motion_ = nullptr;
   std::vector<QDockWidget*> docks_;
   QByteArray default_state_;
   bool layout_restored_ = false;  // a saved layout was restored: keep its dock sizes

@@ -40,11 +40,26 @@ Connection::Connection(const std::string& ip, uint16_t port, XmateType type, Ses
 
 Connection::~Connection() { close(); }
 
-bool Connection::isOpen() const { return tcp_.isOpen() && thread_.joinable(); }
+bool Connection::isOpen() const { return tcp_.isOpen() && rt_running_.load(); }
 
 void Connection::open() {
+  std::lock_guard lock(lifecycle_);
+  openLocked();
+}
+
+void Connection::ensureOpen() {
+  std::lock_guard lock(lifecycle_);
   if (isOpen()) return;
-  close();  // leftovers of a broken session
+  if (ever_opened_.load())
+    throw NetworkException("the session with the controller at " + ip_ + ":" + std::to_string(port_) +
+                           " was lost or closed; it is not re-opened behind your back: call reconnect() "
+                           "(or connect()) to open a new one");
+  openLocked();
+}
+
+void Connection::openLocked() {
+  if (isOpen()) return;
+  closeLocked();  // leftovers of a broken session
   const net::Endpoint controller = net::makeEndpoint(ip_, port_);
   tcp_.open(controller, options_.timeouts.connect_ms);
   try {
@@ -60,16 +75,22 @@ void Connection::open() {
     startRealtimeThread();
     handshake();
     remembered_.move_armed = false;  // a new session has no motion started
+    ever_opened_.store(true);
   } catch (const XmateException&) {
-    close();
+    closeLocked();
     throw;
   } catch (const std::exception& e) {
-    close();
+    closeLocked();
     throw NetworkException(std::string("connect: cannot set up the real-time exchange: ") + e.what());
   }
 }
 
 void Connection::close() {
+  std::lock_guard lock(lifecycle_);
+  closeLocked();
+}
+
+void Connection::closeLocked() {
   stopRealtimeThread();
   tcp_.close();
   rt_->udp.close();
@@ -102,6 +123,11 @@ void Connection::startRealtimeThread() {
     throw NetworkException(std::string("connect: cannot start the real-time thread: ") + e.what());
   }
   rt.started.wait(0, std::memory_order_acquire);  // hand-off: atomic flag; status is written before it
+  {
+    std::lock_guard status_lock(status_mutex_);
+    status_ = rt.status;
+  }
+  rt_running_.store(true);
   if (!rt.status.fifo || !rt.status.memory_locked) {
     const auto& log = options_.log ? options_.log : logToStderr;
     log("the real-time thread runs with " + rt.status.describe() +
@@ -113,6 +139,13 @@ void Connection::stopRealtimeThread() {
   if (!thread_.joinable()) return;
   rt_->stop.store(true, std::memory_order_release);
   thread_.join();
+  rt_running_.store(false);
+  {
+    std::lock_guard status_lock(status_mutex_);
+    status_ = {};
+  }
+  // A run armed after the thread's last look ends here, as the thread would have ended it.
+  finishArmedRunAsClosed(*rt_);
 }
 
 void Connection::handshake() {
@@ -142,14 +175,19 @@ std::vector<uint8_t> Connection::requestFrame(const char* call, const std::funct
   try {
     return tcp_.exchange(call, encode, command, timeout_ms);
   } catch (const TcpException&) {
-    if (!tcp_.isOpen()) stopRealtimeThread();  // the session broke: no stream without it
+    // The session broke: no stream without it. If another thread is opening or closing right now,
+    // that thread deals with the real-time thread.
+    if (!tcp_.isOpen()) {
+      std::unique_lock lock(lifecycle_, std::try_to_lock);
+      if (lock.owns_lock() && !tcp_.isOpen()) stopRealtimeThread();
+    }
     throw;
   }
 }
 
 RCI::robot::RobotState Connection::waitForState() {
   Realtime& rt = *rt_;
-  if (!thread_.joinable()) throw UdpException("receiveRobotState: no session with the controller; call connect()");
+  if (!rt_running_.load()) throw UdpException("receiveRobotState: no session with the controller; call connect()");
   const uint64_t version = rt.latest.version();
   const uint64_t wrong = rt.wrong_length_count.load(std::memory_order_acquire);
   const int64_t deadline = net::monotonicNs() + int64_t(options_.timeouts.state_ms) * 1'000'000;
@@ -182,8 +220,8 @@ SessionTiming Connection::timing() const {
 }
 
 net::RealtimeStatus Connection::realtimeStatus() const {
-  if (!thread_.joinable()) return {};
-  return rt_->status;  // written once before the thread reported `started`
+  std::lock_guard lock(status_mutex_);
+  return status_;  // a copy taken when the thread reported `started`
 }
 
 void Connection::beginMotionHold(ControlKind kind) {
@@ -204,17 +242,29 @@ ControlResult Connection::runControl(ControlKind kind, const void* callback) {
   Realtime& rt = *rt_;
   ControlResult result;
   result.kind = kind;
-  if (!thread_.joinable()) {
+  if (!rt_running_.load()) {
     result.outcome = ControlOutcome::kSessionClosed;
     return result;
   }
-  // Hand-off: request fields, then kArmed (release); the thread answers with kDone (see RunState).
+  // Hand-off: request fields, then kIdle -> kArmed (compare-and-swap, release); the thread answers
+  // with kDone (see RunState).
+  uint32_t idle = kRunIdle;
+  if (rt.run_state.load() != kRunIdle)
+    throw InvalidOperationException("Control(): another Control() run is active on this session");
   rt.kind = kind;
   rt.callback = callback;
-  rt.run_state.store(kRunArmed, std::memory_order_release);
+  if (!rt.run_state.compare_exchange_strong(idle, kRunArmed))
+    throw InvalidOperationException("Control(): another Control() run is active on this session");
   endMotionHold();  // the run answers from now on (the thread checks the run first)
-  for (uint32_t s = kRunArmed; s == kRunArmed; s = rt.run_state.load(std::memory_order_acquire))
-    rt.run_state.wait(kRunArmed, std::memory_order_acquire);
+  // Closed meanwhile (the thread may have looked for a run before it was armed): end it here. If
+  // close() is still joining, its own finishArmedRunAsClosed does it; exactly one of the two wins.
+  if (!rt_running_.load()) {
+    std::lock_guard lock(lifecycle_);  // no thread starts or stops while we look
+    if (!rt_running_.load()) finishArmedRunAsClosed(rt);
+  }
+  for (uint32_t s = rt.run_state.load(std::memory_order_acquire); s != kRunDone;
+       s = rt.run_state.load(std::memory_order_acquire))
+    rt.run_state.wait(s, std::memory_order_acquire);
 
   result.outcome = rt.outcome;
   result.last_state = rt.last_state;

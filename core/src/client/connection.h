@@ -10,6 +10,7 @@
 #include <exception>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -40,7 +41,7 @@ struct SessionTimeouts {
 
 struct SessionOptions {
   SessionTimeouts timeouts;
-  bool realtime = true;        // try SCHED_FIFO + mlockall for the real-time thread
+  bool realtime = true;        // try SCHED_FIFO for the real-time thread and lock its memory in RAM
   int realtime_priority = 80;
   // Where the session reports what it could not get (real-time refused, ...). Default: stderr.
   std::function<void(const std::string&)> log;
@@ -108,11 +109,18 @@ class Connection {
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
 
+  // Opening and closing are serialised: any thread may call open(), close(), ensureOpen() and
+  // isOpen() at any time (docs/client.md, "Threads").
   // Opens the TCP session, binds the UDP socket on a free port, starts the real-time thread and
   // performs the Connect handshake. No-op when open. Throws TcpException (unreachable),
   // NetworkException (thread, socket) or ProtocolException (incompatible library version).
   void open();
-  // Stops the real-time thread and closes both sockets. Safe to call twice.
+  // What every Robot call does first: open() if this connection was never opened; if it was and
+  // the session broke or was closed since, throws NetworkException -- a lost session is re-opened
+  // only on purpose (Robot::connect() / reconnect(), from the thread that owns the session).
+  void ensureOpen();
+  // Stops the real-time thread and closes both sockets; a Control() run in progress (or armed
+  // right now) ends with kSessionClosed. Safe to call twice, from any thread.
   void close();
   bool isOpen() const;
 
@@ -141,7 +149,7 @@ class Connection {
   // The GUI's ring of compact samples: exactly one consumer thread may pop.
   SampleRing& samples() { return *samples_; }
   SessionTiming timing() const;
-  // What the real-time thread got (valid once open() returned).
+  // What the real-time thread got (valid once open() returned; empty when closed). Any thread.
   net::RealtimeStatus realtimeStatus() const;
   // The UDP port the states arrive on (0 when closed).
   uint16_t udpPort() const { return udp_port_; }
@@ -181,9 +189,11 @@ class Connection {
   static protocol::Command commandOf(const protocol::EmptyRequest& m) { return m.command; }
 
   ControlResult runControl(ControlKind kind, const void* callback);
+  void openLocked();
+  void closeLocked();
   void handshake();
   void startRealtimeThread();
-  void stopRealtimeThread();
+  void stopRealtimeThread();  // with lifecycle_ held
 
   const std::string ip_;
   const uint16_t port_;
@@ -193,7 +203,15 @@ class Connection {
   uint16_t udp_port_ = 0;
   std::unique_ptr<Realtime> rt_;         // allocated once, reused by every session
   std::unique_ptr<SampleRing> samples_;  // ~2 MB: on the heap, allocated once
-  std::thread thread_;
+  // Open/close/reconnect are serialised by lifecycle_ (held while the session is set up or torn
+  // down; never by the real-time thread). rt_running_ tells other threads, without the lock,
+  // whether the real-time thread runs (set after it started, cleared after it was joined).
+  mutable std::mutex lifecycle_;
+  std::thread thread_;                   // lifecycle_
+  std::atomic<bool> rt_running_{false};
+  std::atomic<bool> ever_opened_{false};
+  mutable std::mutex status_mutex_;      // guards status_ (a copy of what the thread reported)
+  net::RealtimeStatus status_;
   Remembered remembered_;
 };
 

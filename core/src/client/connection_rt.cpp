@@ -350,10 +350,29 @@ void processDatagram(Connection::Realtime& rt, long size, const net::Endpoint& f
     checkSilence(rt, received_ns);
 }
 
+void finishArmedRunAsClosed(Connection::Realtime& rt) {
+  uint32_t armed = kRunArmed;
+  if (!rt.run_state.compare_exchange_strong(armed, kRunClosing)) return;
+  rt.outcome = ControlOutcome::kSessionClosed;
+  rt.last_state = rt.state;
+  rt.cycles = 0;
+  rt.log_written = 0;
+  rt.exception = nullptr;
+  rt.fault = {};
+  rt.wrong_length = 0;
+  rt.longest_stall_ns = 0;
+  rt.stall_message_id = 0;
+  rt.states_skipped = 0;
+  rt.run_active = false;
+  rt.run_state.store(kRunDone, std::memory_order_release);
+  rt.run_state.notify_all();
+}
+
 void runRealtimeThread(Connection::Realtime& rt) {
   net::nameThisThread("rci-rt");
   if (rt.try_realtime)
-    rt.status = net::enableRealtimeForThisThread(rt.realtime_priority);
+    rt.status = net::enableRealtimeForThisThread(
+        rt.realtime_priority, {{&rt, sizeof rt}, {rt.samples, sizeof *rt.samples}});
   else
     rt.status.reason = "real-time scheduling not requested (SessionOptions::realtime = false)";
   rt.started.store(1, std::memory_order_release);

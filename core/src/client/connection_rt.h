@@ -20,7 +20,10 @@ namespace xmate::client {
 // stores kArmed (release); the real-time thread runs it and, when it ends, fills the result fields
 // and stores kDone (release) + notify; the caller waits on it (std::atomic::wait), reads the
 // result and stores kIdle. Between kArmed and kDone only the real-time thread touches the run.
-enum RunState : uint32_t { kRunIdle = 0, kRunArmed = 1, kRunDone = 2 };
+// Runs are armed with a compare-and-swap from kIdle. When the session closes with a run armed that
+// the thread never took (it had already stopped), the run is ended as kSessionClosed by whichever
+// thread wins the compare-and-swap kArmed -> kClosing (finishArmedRunAsClosed).
+enum RunState : uint32_t { kRunIdle = 0, kRunArmed = 1, kRunDone = 2, kRunClosing = 3 };
 
 enum class RunPhase {
   kWaitingForStart,  // the controller has not yet reported robot_mode kMove: answered "hold still"
@@ -105,6 +108,10 @@ struct Connection::Realtime {
 // states are published, only the newest is answered (after a stall the controller waits for the
 // answer to its newest state: answers to older ones would arrive too late to be used).
 void runRealtimeThread(Connection::Realtime& rt);
+
+// Ends a run that is armed but that no real-time thread will take (the thread was joined) with
+// kSessionClosed, and wakes its caller. No-op when no run is armed. Not on the real-time thread.
+void finishArmedRunAsClosed(Connection::Realtime& rt);
 
 // One step of that body, public so that `rci-cli bench client` can time the exact production path:
 // beginRunIfArmed() notices a newly armed run; processDatagram() handles the `size` bytes in

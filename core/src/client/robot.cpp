@@ -46,7 +46,7 @@ bool Robot::reconnect() {
 }
 
 RCI::robot::RobotState Robot::receiveRobotState() {
-  connect();
+  connection_->ensureOpen();
   return connection_->waitForState();
 }
 
@@ -54,7 +54,7 @@ RCI::robot::RobotState Robot::receiveRobotState() {
 
 void Robot::setCollisionBehavior(const std::array<double, 7>& thresholds) {
   require(model::checkCollisionThresholds(specOf(*connection_), thresholds));
-  connect();
+  connection_->ensureOpen();
   proto::SetCollisionBehaviorRequest m;
   m.thresholds = thresholds;
   requireSetterSuccess("setCollisionBehavior", connection_->request("setCollisionBehavior", m, responseMs(*connection_)));
@@ -62,7 +62,7 @@ void Robot::setCollisionBehavior(const std::array<double, 7>& thresholds) {
 
 void Robot::setCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame, bool active) {
   require(model::checkCartesianLimit(size, frame));
-  connect();
+  connection_->ensureOpen();
   proto::SetCartesianLimitRequest m;
   m.size = size;
   m.frame = frame;
@@ -72,7 +72,7 @@ void Robot::setCartesianLimit(const std::array<double, 3>& size, const std::arra
 
 void Robot::setJointImpedance(const std::array<double, 7>& K_theta) {
   require(model::checkJointImpedance(specOf(*connection_), K_theta));
-  connect();
+  connection_->ensureOpen();
   proto::SetJointImpedanceRequest m;
   m.stiffness = K_theta;
   requireSetterSuccess("setJointImpedance", connection_->request("setJointImpedance", m, responseMs(*connection_)));
@@ -80,7 +80,7 @@ void Robot::setJointImpedance(const std::array<double, 7>& K_theta) {
 
 void Robot::setCartesianImpedance(const std::array<double, 6>& K_x) {
   require(model::checkCartesianImpedance(K_x));
-  connect();
+  connection_->ensureOpen();
   proto::SetCartesianImpedanceRequest m;
   m.stiffness = K_x;
   requireSetterSuccess("setCartesianImpedance",
@@ -89,7 +89,7 @@ void Robot::setCartesianImpedance(const std::array<double, 6>& K_x) {
 
 void Robot::setCoor(const std::array<double, 16>& F_T_EE) {
   require(model::checkToolFrame(F_T_EE));
-  connect();
+  connection_->ensureOpen();
   proto::SetCoorRequest m;
   m.flange_to_tool = F_T_EE;
   requireSetterSuccess("setCoor", connection_->request("setCoor", m, responseMs(*connection_)),
@@ -99,7 +99,7 @@ void Robot::setCoor(const std::array<double, 16>& F_T_EE) {
 
 void Robot::setLoad(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia) {
   require(model::checkLoad(specOf(*connection_), mass, center, inertia));
-  connect();
+  connection_->ensureOpen();
   proto::SetLoadRequest m;
   m.mass = mass;
   m.center = center;
@@ -114,7 +114,7 @@ void Robot::setLoad(double mass, const std::array<double, 3>& center, const std:
 
 void Robot::setFilters(double joint_hz, double cartesian_hz, double torque_hz) {
   require(model::checkFilters(joint_hz, cartesian_hz, torque_hz));
-  connect();
+  connection_->ensureOpen();
   proto::SetFiltersRequest m;
   m.joint_hz = joint_hz;
   m.cartesian_hz = cartesian_hz;
@@ -124,7 +124,7 @@ void Robot::setFilters(double joint_hz, double cartesian_hz, double torque_hz) {
 
 void Robot::setCartImpDesiredTau(const std::array<double, 6>& tau) {
   require(model::checkDesiredWrench(tau));
-  connect();
+  connection_->ensureOpen();
   proto::SetCartImpDesiredTauRequest m;
   m.tau = tau;
   requireSetterSuccess("setCartImpDesiredTau", connection_->request("setCartImpDesiredTau", m, responseMs(*connection_)));
@@ -132,7 +132,7 @@ void Robot::setCartImpDesiredTau(const std::array<double, 6>& tau) {
 
 bool Robot::setMotorPower(int state) {
   require(model::checkMotorPower(state));
-  connect();
+  connection_->ensureOpen();
   proto::SetMotorPowerRequest m;
   m.state = uint8_t(state);
   requireSetterSuccess("setMotorPower", connection_->request("setMotorPower", m, motionResponseMs(*connection_)),
@@ -141,7 +141,7 @@ bool Robot::setMotorPower(int state) {
 }
 
 int Robot::getMotorState() {
-  connect();
+  connection_->ensureOpen();
   const uint8_t value = client::byteValue(
       "getMotorState", connection_->request("getMotorState", proto::EmptyRequest{proto::Command::kGetMotorState},
                                             responseMs(*connection_)));
@@ -153,7 +153,7 @@ int Robot::getMotorState() {
 bool Robot::setDO(RCI::robot::DOSIGNAL signal, bool state) {
   if (uint8_t(signal) > uint8_t(RCI::robot::DOSIGNAL::DO1_1))
     throw std::invalid_argument("setDO: signal = " + std::to_string(int(signal)) + " is not one of DO0_0..DO1_1");
-  connect();
+  connection_->ensureOpen();
   proto::SetDORequest m;
   m.signal = uint8_t(signal);
   m.state = state;
@@ -164,7 +164,7 @@ bool Robot::setDO(RCI::robot::DOSIGNAL signal, bool state) {
 bool Robot::getDI(RCI::robot::DISIGNAL signal) {
   if (uint8_t(signal) > uint8_t(RCI::robot::DISIGNAL::DI1_1))
     throw std::invalid_argument("getDI: signal = " + std::to_string(int(signal)) + " is not one of DI0_0..DI1_1");
-  connect();
+  connection_->ensureOpen();
   proto::GetDIStateRequest m;
   m.signal = uint8_t(signal);
   return client::digitalInputLevel(connection_->request("getDI", m, responseMs(*connection_)));
@@ -173,7 +173,7 @@ bool Robot::getDI(RCI::robot::DISIGNAL signal) {
 void Robot::setJointLimit(const std::array<double, 7>& upper_deg, const std::array<double, 7>& lower_deg,
                           bool auto_limit) {
   require(model::checkSoftLimits(specOf(*connection_), upper_deg, lower_deg));
-  connect();
+  connection_->ensureOpen();
   proto::SetJointLimitRequest m;
   m.upper = upper_deg;
   m.lower = lower_deg;
@@ -183,7 +183,7 @@ void Robot::setJointLimit(const std::array<double, 7>& upper_deg, const std::arr
 
 void Robot::setFcCoor(const std::array<double, 16>& frame, int fc_type) {
   require(model::checkForceFrame(frame, fc_type));
-  connect();
+  connection_->ensureOpen();
   proto::SetFcCoorRequest m;
   m.frame = frame;
   m.type = uint8_t(fc_type - 1);  // API 1 world, 2 tool, 3 path -> wire 0..2
@@ -192,7 +192,7 @@ void Robot::setFcCoor(const std::array<double, 16>& frame, int fc_type) {
 
 void Robot::startDrag(int drag_space, int drag_type) {
   require(model::checkDrag(drag_space, drag_type));
-  connect();
+  connection_->ensureOpen();
   proto::StartDragRequest m;
   m.space = uint8_t(drag_space - 1);  // API 1 joint, 2 Cartesian -> wire 0, 1
   m.type = uint8_t(drag_type - 1);    // API 1 translation, 2 rotation, 3 free -> wire 0..2
@@ -201,20 +201,20 @@ void Robot::startDrag(int drag_space, int drag_type) {
 }
 
 void Robot::stopDrag() {
-  connect();
+  connection_->ensureOpen();
   requireSetterSuccess("stopDrag", connection_->request("stopDrag", proto::EmptyRequest{proto::Command::kStopDrag},
                                                         motionResponseMs(*connection_)));
 }
 
 void Robot::automaticErrorRecovery() {
-  connect();
+  connection_->ensureOpen();
   client::requireRecoverySuccess(connection_->request(
       "automaticErrorRecovery", proto::EmptyRequest{proto::Command::kAutomaticErrorRecovery},
       motionResponseMs(*connection_)));
 }
 
 void Robot::rebootRobot() {
-  connect();
+  connection_->ensureOpen();
   requireSetterSuccess("rebootRobot", connection_->request("rebootRobot", proto::EmptyRequest{proto::Command::kRebootRobot},
                                                            motionResponseMs(*connection_)));
   // The controller drops the session and comes back with its defaults: so do we.
@@ -223,7 +223,7 @@ void Robot::rebootRobot() {
 }
 
 int Robot::getSafetyStopState() {
-  connect();
+  connection_->ensureOpen();
   const uint8_t value = client::byteValue(
       "getSafetyStopState", connection_->request("getSafetyStopState",
                                                  proto::EmptyRequest{proto::Command::kGetSafetyStopState},

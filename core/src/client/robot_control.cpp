@@ -100,7 +100,7 @@ void Robot::startMove(CM controller_mode, MM motion_mode) {
                                 motionModeName(motion_mode) +
                                 ") is not supported; use (kJointPosition or kJointImpedance, kJointPosition), "
                                 "(kCartesianPosition or kCartesianImpedance, kCartesianPosition) or (kTorque, kIdle)");
-  connect();
+  connection_->ensureOpen();
   protocol::StartMoveRequestMsg m;
   m.controller_mode = uint8_t(controller_mode);
   m.motion_mode = uint8_t(motion_mode);
@@ -119,7 +119,7 @@ void Robot::startMove(CM controller_mode, MM motion_mode) {
 }
 
 void Robot::stopMove() {
-  connect();
+  connection_->ensureOpen();
   connection_->remembered().move_armed = false;
   connection_->endMotionHold();
   client::requireStopMoveSuccess(connection_->request(
@@ -195,7 +195,7 @@ void control(Robot& robot, client::Connection& connection, ControlKind kind, con
     throw InvalidOperationException(call + ": startMove(" + controllerModeName(remembered.controller_mode) + ", " +
                                     motionModeName(remembered.motion_mode) + ") does not drive a " +
                                     client::toString(kind) + " callback; call " + pairFor(kind) + " first");
-  robot.connect();
+  connection.ensureOpen();
   remembered.move_armed = false;  // one Control() per startMove()
   const client::ControlResult result = connection.runControl(callback);
   if (result.outcome != ControlOutcome::kFinished) raise(robot, result);

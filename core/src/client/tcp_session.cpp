@@ -28,8 +28,16 @@ void TcpSession::close() {
 
 net::Endpoint TcpSession::local() const { return connection_.local(); }
 
-void TcpSession::fail(const char* call, const char* what, net::IoResult result, int timeout_ms) {
+void TcpSession::fail(const char* call, const char* what, net::IoResult result, int timeout_ms, bool mid_frame) {
   std::string message = std::string(call) + ": " + what + " " + controller_.toString() + ": ";
+  if (result == net::IoResult::kTimeout && mid_frame) {
+    // Part of a frame was read: every later answer would be read from the middle of this one.
+    connection_.close();
+    open_.store(false, std::memory_order_release);
+    throw TcpException(message + "the response stopped in the middle of a frame for " + std::to_string(timeout_ms) +
+                       " ms; the session is closed because the rest of the stream cannot be trusted: "
+                       "call reconnect()");
+  }
   if (result == net::IoResult::kTimeout) {
     // The session stays usable: a late response is recognised by its sequence number and skipped.
     throw TcpException(message + "no response within " + std::to_string(timeout_ms) +
@@ -60,8 +68,10 @@ std::vector<uint8_t> TcpSession::exchange(const char* call, const std::function<
   for (;;) {
     const int remaining_ms = int(std::max<int64_t>(0, (deadline - net::monotonicNs()) / 1'000'000));
     uint8_t header_bytes[protocol::kFrameHeaderSize];
-    if (const auto r = connection_.readExact(header_bytes, sizeof header_bytes, remaining_ms); r != net::IoResult::kOk)
-      fail(call, "no response from", r, timeout_ms);
+    size_t header_read = 0;
+    if (const auto r = connection_.readExact(header_bytes, sizeof header_bytes, remaining_ms, &header_read);
+        r != net::IoResult::kOk)
+      fail(call, "no response from", r, timeout_ms, header_read > 0);
     const protocol::FrameHeader header = protocol::decodeFrameHeader(header_bytes);
     if (header.length > protocol::kMaxPayloadSize)
       throw ProtocolException(std::string(call) + ": the controller sent a frame of " + std::to_string(header.length) +
@@ -70,7 +80,7 @@ std::vector<uint8_t> TcpSession::exchange(const char* call, const std::function<
     std::vector<uint8_t> payload(header.length);
     if (const auto r = connection_.readExact(payload.data(), payload.size(), std::max(remaining_ms, 100));
         r != net::IoResult::kOk)
-      fail(call, "incomplete response from", r, timeout_ms);
+      fail(call, "incomplete response from", r, timeout_ms, true);
     if (header.sequence != sequence) continue;  // the late answer to an earlier, timed-out request
     const protocol::Command got = protocol::peekCommand(payload.data(), payload.size());
     if (got != expected)

@@ -32,7 +32,10 @@ class TcpSession {
                                 protocol::Command expected, int timeout_ms);
 
  private:
-  [[noreturn]] void fail(const char* call, const char* what, net::IoResult result, int timeout_ms);
+  // Throws TcpException for a failed exchange; closes the session unless it was a timeout with no
+  // byte of the frame read (mid_frame false), after which the stream is still aligned.
+  [[noreturn]] void fail(const char* call, const char* what, net::IoResult result, int timeout_ms,
+                         bool mid_frame = false);
 
   std::mutex mutex_;  // one request/response at a time (callers may be on several threads)
   net::TcpConnection connection_;

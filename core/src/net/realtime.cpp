@@ -1,4 +1,4 @@
-// Linux specifics behind realtime.h: pthread scheduling, mlockall, /proc and /sys reads.
+// Linux specifics behind realtime.h: pthread scheduling, mlock/mlockall, /proc and /sys reads.
 #include "net/realtime.h"
 
 #include <pthread.h>
@@ -22,6 +22,19 @@ std::string readFirstLine(const char* path) {
   return line;
 }
 
+bool realtimeDisabled() {
+  const char* off = std::getenv("RCI_NO_REALTIME");
+  return off && std::strcmp(off, "1") == 0;
+}
+
+// Touches kLockedStackBytes of stack below the caller and locks them: the loop's later calls reuse
+// these pages. 0 or the errno of mlock.
+[[gnu::noinline]] int lockStack() {
+  volatile unsigned char pages[kLockedStackBytes];
+  for (size_t i = 0; i < sizeof pages; i += 4096) pages[i] = 0;
+  return mlock(const_cast<unsigned char*>(pages), sizeof pages) == 0 ? 0 : errno;
+}
+
 }  // namespace
 
 std::string RealtimeStatus::describe() const {
@@ -31,9 +44,9 @@ std::string RealtimeStatus::describe() const {
   return s;
 }
 
-RealtimeStatus enableRealtimeForThisThread(int priority) {
+RealtimeStatus enableRealtimeForThisThread(int priority, std::initializer_list<MemoryRegion> regions) {
   RealtimeStatus st;
-  if (const char* off = std::getenv("RCI_NO_REALTIME"); off && std::strcmp(off, "1") == 0) {
+  if (realtimeDisabled()) {
     st.reason = "real-time scheduling disabled by RCI_NO_REALTIME=1";
     return st;
   }
@@ -47,13 +60,23 @@ RealtimeStatus enableRealtimeForThisThread(int priority) {
     st.reason = std::string("SCHED_FIFO refused: ") + std::strerror(err) +
                 "; run as root or grant rtprio in /etc/security/limits.conf";
   }
-  if (mlockall(MCL_CURRENT | MCL_FUTURE) == 0) {
+  int error = lockStack();
+  for (const MemoryRegion& r : regions)
+    if (error == 0 && r.size > 0 && mlock(r.data, r.size) != 0) error = errno;
+  if (error == 0) {
     st.memory_locked = true;
   } else {
-    const std::string why = std::string("mlockall refused: ") + std::strerror(errno) + "; raise memlock in limits.conf";
+    const std::string why = std::string("mlock refused: ") + std::strerror(error) + "; raise memlock in limits.conf";
     st.reason = st.reason.empty() ? why : st.reason + "; " + why;
   }
   return st;
+}
+
+std::string lockAllMemory() {
+  if (realtimeDisabled()) return {};
+  if (mlockall(MCL_CURRENT | MCL_FUTURE) == 0) return {};
+  return std::string("mlockall refused: ") + std::strerror(errno) +
+         "; raise memlock in /etc/security/limits.conf (or run as root)";
 }
 
 void nameThisThread(const char* name) { pthread_setname_np(pthread_self(), name); }

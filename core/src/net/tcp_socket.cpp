@@ -101,14 +101,17 @@ IoResult TcpConnection::sendAll(const void* data, size_t size, int timeout_ms) {
   return IoResult::kOk;
 }
 
-IoResult TcpConnection::readExact(void* data, size_t size, int timeout_ms) {
-  auto* p = static_cast<uint8_t*>(data);
+IoResult TcpConnection::readExact(void* data, size_t size, int timeout_ms, size_t* read) {
+  auto* const begin = static_cast<uint8_t*>(data);
+  auto* p = begin;
+  if (read) *read = 0;
   const int64_t deadline = monotonicNs() + int64_t(timeout_ms) * 1'000'000;
   while (size > 0) {
     const long n = ::recv(fd_, p, size, 0);
     if (n > 0) {
       p += n;
       size -= size_t(n);
+      if (read) *read = size_t(p - begin);
       continue;
     }
     if (n == 0) return IoResult::kClosed;

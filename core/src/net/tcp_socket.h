@@ -30,8 +30,9 @@ class TcpConnection {
   bool isOpen() const { return fd_ >= 0; }
   // Writes all bytes or fails; each wait for the socket is bounded by timeout_ms.
   IoResult sendAll(const void* data, size_t size, int timeout_ms);
-  // Reads exactly size bytes; waits at most timeout_ms in total (< 0: forever).
-  IoResult readExact(void* data, size_t size, int timeout_ms);
+  // Reads exactly size bytes; waits at most timeout_ms in total (< 0: forever). *read (optional)
+  // gets how many bytes arrived, also when it fails (a timeout after part of a frame).
+  IoResult readExact(void* data, size_t size, int timeout_ms, size_t* read = nullptr);
   // Wakes any thread blocked on this connection (it sees kClosed) without closing the descriptor.
   void shutdown();
   void close();

@@ -44,17 +44,44 @@ void writeAll(int fd, const std::string& contents, const std::string& path, cons
   }
 }
 
+// The file a save replaces: `path`, or where a symbolic link at `path` points (followed to its end,
+// relative links resolved against the link's folder), so the link stays a link.
+std::string resolveLinks(const std::string& path) {
+  std::string target = path;
+  for (int hops = 0; hops < 40; ++hops) {  // the kernel's own limit (ELOOP)
+    struct stat st {};
+    if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return target;
+    std::vector<char> buffer(size_t(st.st_size > 0 ? st.st_size : 4095) + 1);
+    const ssize_t n = ::readlink(target.c_str(), buffer.data(), buffer.size() - 1);
+    if (n < 0) return target;
+    const std::string link(buffer.data(), size_t(n));
+    target = link.front() == '/' ? link : folderOf(target) + "/" + link;
+  }
+  throw std::runtime_error("cannot save " + path + ": it is a chain of more than 40 symbolic links (a loop?); "
+                           "save under another name");
+}
+
 }  // namespace
 
-void writeFileAtomically(const std::string& path, const std::string& contents) {
-  if (path.empty()) throw std::runtime_error("cannot save: no file name given");
+void writeFileAtomically(const std::string& requested, const std::string& contents) {
+  if (requested.empty()) throw std::runtime_error("cannot save: no file name given");
+  const std::string path = resolveLinks(requested);
   std::string pattern = path + ".tmp-XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
   if (fd < 0) failWith(path, "creating a temporary file next to it", errno);
   const std::string temp(name.data());
-  ::fchmod(fd, 0644);  // mkstemp makes it 0600; a saved program is an ordinary file
+  // mkstemp makes it 0600: keep the permissions of the file it replaces, else an ordinary file's
+  // (0666 less the umask).
+  struct stat existing {};
+  if (::stat(path.c_str(), &existing) == 0) {
+    ::fchmod(fd, existing.st_mode & 07777);
+  } else {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+  }
   writeAll(fd, contents, path, temp);
   if (::fsync(fd) != 0) {
     const int e = errno;

@@ -7,7 +7,9 @@
 namespace xmate::teach {
 
 // Replaces `path` with `contents`. On any failure the previous file is untouched, the temporary is
-// removed, and std::runtime_error says what failed (with the OS reason) and what to do.
+// removed, and std::runtime_error says what failed (with the OS reason) and what to do. The new
+// file keeps the permissions of the one it replaces; a symbolic link at `path` stays a link and
+// the file it points to is replaced.
 void writeFileAtomically(const std::string& path, const std::string& contents);
 
 // The whole file; std::runtime_error naming the path and the OS reason if it cannot be read.

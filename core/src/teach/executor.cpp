@@ -74,10 +74,10 @@ Progress Executor::progress() const {
 }
 
 bool Executor::waitWhilePaused() {
-  if (!pause_requested_.load()) return !stop_requested_.load();
+  if (!pause_requested_.load()) return !stopping();
   setState(RunState::kPaused);
-  while (pause_requested_.load() && !stop_requested_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  if (stop_requested_.load()) return false;
+  while (pause_requested_.load() && !stopping()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  if (stopping()) return false;
   setState(RunState::kRunning);
   return true;
 }
@@ -86,6 +86,7 @@ RunReport Executor::run(Robot& robot, const Program& program, const ExecutorOpti
   if (active_.exchange(true)) throw std::logic_error("Executor::run: a program is already running on this executor");
   ActiveGuard guard{active_};
   robot_ = &robot;
+  stop_token_ = options.stop_token;
   has_soft_limits_ = options.has_soft_limits;
   soft_lower_ = options.soft_lower;
   soft_upper_ = options.soft_upper;
@@ -142,7 +143,7 @@ RunReport Executor::run(Robot& robot, const Program& program, const ExecutorOpti
       report.message = r.message;
       break;
     }
-    if (r.status == InstructionStatus::kStopped || stop_requested_.load()) {
+    if (r.status == InstructionStatus::kStopped || stopping()) {
       report.outcome = RunState::kStopped;
       report.message = describe(program, i) + ": stopped by the operator";
       break;
@@ -200,7 +201,7 @@ void Executor::runWait(const Instruction& in, InstructionReport& r) {
   double waited = 0;
   auto last = Clock::now();
   while (waited * 1000 < in.ms) {
-    if (stop_requested_.load()) {
+    if (stopping()) {
       r.status = InstructionStatus::kStopped;
       r.message = "stopped by the operator";
       return;
@@ -220,7 +221,7 @@ void Executor::runWaitDi(const Program& program, size_t index, InstructionReport
   const auto signal = RCI::robot::DISIGNAL(uint8_t(in.signal));
   for (;;) {
     if (robot_->getDI(signal) == in.value) return;
-    if (stop_requested_.load()) {
+    if (stopping()) {
       r.status = InstructionStatus::kStopped;
       r.message = "stopped by the operator";
       return;

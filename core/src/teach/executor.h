@@ -67,6 +67,10 @@ struct ExecutorOptions {
   std::array<double, 7> soft_lower{}, soft_upper{};
   bool has_box = false;         // for the pre-flight (the robot's setCartesianLimit)
   SafetyBox box;
+  // An outside stop request, polled with stop() in pauses, WAIT, WAIT_DI and every motion cycle:
+  // once it is set the run stops smoothly as by stop(). E.g. the window's session token, set on
+  // Stop, disconnect and quit. Must outlive run(); nullptr for none.
+  const std::atomic<bool>* stop_token = nullptr;
   // Called on the run's thread (never the real-time one) when an instruction starts and ends.
   std::function<void(size_t index)> on_start;
   std::function<void(size_t index, const InstructionReport& report)> on_done;
@@ -103,6 +107,7 @@ class Executor {
 
  private:
   Robot* robot_ = nullptr;  // during run()
+  const std::atomic<bool>* stop_token_ = nullptr;  // during run(): ExecutorOptions::stop_token
   bool has_soft_limits_ = false;  // during run(): the options' soft limits, for IK of pose targets
   std::array<double, 7> soft_lower_{}, soft_upper_{};
   std::atomic<bool> active_{false};
@@ -115,6 +120,11 @@ class Executor {
   std::atomic<double> fraction_{0};
 
   void setState(RunState s) { state_.store(int(s)); }
+  // stop() was called or the options' stop token is set. Real-time safe.
+  bool stopping() const {
+    return stop_requested_.load(std::memory_order_relaxed) ||
+           (stop_token_ && stop_token_->load(std::memory_order_relaxed));
+  }
   // Blocks while paused (between instructions); false when stop() ended the wait.
   bool waitWhilePaused();
   InstructionReport execute(const Program& program, size_t index);

@@ -137,12 +137,12 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
   double max_joint_error = 0, max_tcp_error = 0;
   // What k should go to, and the state to show, this cycle.
   auto targetK = [&]() -> double {
-    const bool stopping = stop_requested_.load(std::memory_order_relaxed);
+    const bool stop_now = stopping();
     const bool pausing = pause_requested_.load(std::memory_order_relaxed);
-    if (stopping) setState(RunState::kStopping);
+    if (stop_now) setState(RunState::kStopping);
     else if (pausing) setState(clock.scaling.value() == 0 ? RunState::kPaused : RunState::kPausing);
     else setState(RunState::kRunning);
-    return stopping || pausing ? 0.0 : override_.load(std::memory_order_relaxed);
+    return stop_now || pausing ? 0.0 : override_.load(std::memory_order_relaxed);
   };
   auto track = [&](const RobotState& s) {
     max_joint_error = std::max(max_joint_error, jointError(s, dof));
@@ -150,7 +150,7 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
   };
   // Stop requested and the ramp has reached zero: end the motion where it stands.
   auto stoppedHere = [&]() {
-    return stop_requested_.load(std::memory_order_relaxed) && clock.scaling.value() == 0 && clock.scaling.settled();
+    return stopping() && clock.scaling.value() == 0 && clock.scaling.settled();
   };
 
   if (in.type == InstructionType::kMoveJ) {
