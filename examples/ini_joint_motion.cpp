@@ -2,6 +2,7 @@
 // report the motor state, power on, MOVEJ to a start pose, then a joint-space S-curve back to zero
 // on the 6-axis xMate 7. Linux version of the manual's program; usage: ini_joint_motion [INI_FILE]
 // (default ./xmate.ini; without a readable file it uses 127.0.0.1:1337).
+#include <cstdint>
 #include <iostream>
 #include <string>
 
@@ -45,13 +46,17 @@ int main(int argc, char* argv[]) {
     JointPositions output{};
     bool init = true;
     double time = 0;
+    uint64_t first_id = 0;
 
     JointControl joint_position_callback = [&](RCI::robot::RobotState robot_state) -> JointPositions {
-      time += 0.001;
       if (init) {
         init_position = robot_state.q;
+        first_id = robot_state.message_id;
         init = false;
       }
+      // The controller's clock: one message_id per 1 ms cycle. Counting callbacks instead would
+      // fall behind after a lost state and make the next command a double step.
+      time = double(robot_state.message_id - first_id + 1) * 0.001;
       joint_s.calculateSynchronizedValues_joint(init_position);
       const bool finished = joint_s.calculateDesiredValues_joint(time, joint_delta);
       for (unsigned int i = 0; i < 6; i++) output.q[i] = init_position[i] + joint_delta[i];

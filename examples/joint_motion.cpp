@@ -2,6 +2,7 @@
 // inside a JointControl callback that ends with MotionFinished. Linux version of the manual's
 // program; usage: joint_motion [HOST:PORT] (default 127.0.0.1:1337, e.g. a running rci-sim).
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <string>
 
@@ -46,13 +47,17 @@ int main(int argc, char* argv[]) {
     JointPositions output{};
     bool init = true;
     double time = 0;
+    uint64_t first_id = 0;
 
     JointControl joint_position_callback = [&](RCI::robot::RobotState robot_state) -> JointPositions {
-      time += 0.001;
       if (init) {
         init_position = robot_state.q;  // the joints at the start of the motion
+        first_id = robot_state.message_id;
         init = false;
       }
+      // The controller's clock: one message_id per 1 ms cycle. Counting callbacks instead would
+      // fall behind after a lost state and make the next command a double step.
+      time = double(robot_state.message_id - first_id + 1) * 0.001;
       // All joints arrive together; true once the plan is finished.
       joint_s.calculateSynchronizedValues_joint(init_position);
       if (!joint_s.calculateDesiredValues_joint(time, joint_delta)) {

@@ -24,6 +24,11 @@ RampLimits cartesianRamp(int axis, double speed_fraction) {
 
 }  // namespace
 
+int elapsedCycles(uint64_t previous_id, uint64_t id) {
+  if (id <= previous_id) return 1;
+  return int(std::min<uint64_t>(id - previous_id, 20));
+}
+
 JointLimitsRad jogLimits(const xmate::model::RobotSpec& spec, bool soft_enabled,
                          const std::array<double, 7>& soft_lower_deg, const std::array<double, 7>& soft_upper_deg) {
   constexpr double kRad = 3.14159265358979323846 / 180.0;
@@ -49,8 +54,10 @@ JointJog::JointJog(const xmate::model::RobotSpec& spec, int joint, int direction
       ramp_(jointRamp(spec, joint, speed_fraction)) {}
 
 xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
+  const int cycles = started_ ? elapsedCycles(last_id_, state.message_id) : 1;
+  last_id_ = state.message_id;
   if (!started_) {
-    q_ = state.q;  // at start the command equals the measured position (SPEC.md §5)
+    q_ = state.q;  // at start the command equals the measured position
     started_ = true;
   }
   const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);
@@ -64,7 +71,7 @@ xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
     if ((direction_ > 0 && stop_at > limits_.upper[joint_]) || (direction_ < 0 && stop_at < limits_.lower[joint_]))
       target = 0;
   }
-  q_[joint_] += ramp_.step(target);
+  for (int c = 0; c < cycles; ++c) q_[joint_] += ramp_.step(target);
   xmate::JointPositions command{q_};
   if (!go && ramp_.atRest()) return xmate::MotionFinished(command);
   return command;
@@ -108,6 +115,8 @@ std::array<double, 16> CartesianJog::pose() const {
 }
 
 xmate::CartesianPose CartesianJog::next(const RCI::robot::RobotState& state) {
+  const int cycles = started_ ? elapsedCycles(last_id_, state.message_id) : 1;
+  last_id_ = state.message_id;
   if (!started_) {
     start_ = state.toolTobase_pos_m;  // at start the command equals the measured pose
     started_ = true;
@@ -115,7 +124,7 @@ xmate::CartesianPose CartesianJog::next(const RCI::robot::RobotState& state) {
   const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);
   double target = go ? direction_ * ramp_.maxVelocity() : 0.0;
   if (go && jointsNearLimit(state)) target = 0;
-  travelled_ += ramp_.step(target);
+  for (int c = 0; c < cycles; ++c) travelled_ += ramp_.step(target);
   xmate::CartesianPose command;
   command.toolTobase_pos_c = pose();
   command.psi_valid = false;  // keep the arm angle

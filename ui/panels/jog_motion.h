@@ -1,11 +1,14 @@
 // The real-time side of a jog: per-cycle command generators for Robot::Control(). While the jog
 // button is held the axis ramps up to the jog speed; on release (or a stop request) it ramps down
 // and the motion ends with MotionFinished. It brakes on its own before a soft or hardware limit.
-// Runs on the client's real-time thread: no allocation, no locks, no Qt.
+// The ramp advances by the controller's elapsed cycles (message_id), so a lost state does not turn the
+// next command into a double step. Runs on the client's real-time thread: no allocation, no locks,
+// no Qt.
 #pragma once
 
 #include <array>
 #include <atomic>
+#include <cstdint>
 
 #include <xmate/rci_types.h>
 #include <xmate/types.h>
@@ -15,7 +18,7 @@
 
 namespace rci::ui {
 
-// Jog speeds at 100 % of the speed slider (fractions of the model's limits, SPEC.md §5).
+// Jog speeds at 100 % of the speed slider (fractions of the model's limits).
 inline constexpr double kJogJointSpeedFraction = 0.5;    // of dq_max
 inline constexpr double kJogJointAccelFraction = 0.25;   // of ddq_max
 inline constexpr double kJogTranslationSpeed = 0.25;     // m/s
@@ -35,6 +38,9 @@ struct JogFlags {
   std::atomic<bool> stop{false};  // stop now (session stop request, panel closing)
   std::atomic<bool> window_silent{false};  // the dead-man ended it (set by the callback)
 };
+
+// Cycles since the previous state (at least 1, at most 20: longer gaps end the motion anyway).
+int elapsedCycles(uint64_t previous_id, uint64_t id);
 
 struct JointLimitsRad {
   std::array<double, 7> lower{}, upper{};
@@ -58,6 +64,7 @@ class JointJog {
   const JogFlags& flags_;
   JogRamp ramp_;
   bool started_ = false;
+  uint64_t last_id_ = 0;  // message_id of the previous state: the ramp advances by elapsed cycles
   std::array<double, 7> q_{};
 };
 
@@ -79,6 +86,7 @@ class CartesianJog {
   const JogFlags& flags_;
   JogRamp ramp_;
   bool started_ = false;
+  uint64_t last_id_ = 0;
   std::array<double, 16> start_{};
   double travelled_ = 0;  // m or rad along the axis
 };
