@@ -27,7 +27,7 @@ std::string header(const model::RobotSpec& spec) {
          "     core/src/model/robot_spec.cpp; change those and build the target regenerate-robots\n"
          "     (docs/robot_descriptions.md).\n"
          "     " + std::string(spec.display_name) + ": joint placements from the DH table of the vendor manual\n"
-         "     (SPEC.md section 6), joint limits from SPEC.md section 5 (position rad, velocity rad/s,\n"
+         "     (docs/robot_models.md), joint limits from its limit tables (position rad, velocity rad/s,\n"
          "     effort Nm). Frames: link i sits on joint i's axis; base_link is the robot base frame.\n"
          "     ESTIMATES: every mass, centre of mass and inertia below is an estimate (see the comment\n"
          "     in each link and docs/robot_descriptions.md). -->\n";

@@ -160,7 +160,7 @@ class TestProtocol : public QObject {
   }
 
   void tcpPayloadSizes() {
-    // The "bytes" column of RCI_WIRE.md: Command code (4) + fields.
+    // The "bytes" column of docs/protocol.md ("Command codes and payloads"): Command code (4) + fields.
     auto payload = [](const Frame& f) { return f.size() - kFrameHeaderSize; };
     QCOMPARE(payload(encodeFrame(1, ConnectRequest{})), size_t(6));
     QCOMPARE(payload(encodeFrame(1, ByteResponse{Command::kConnect, 0})), size_t(5));

@@ -73,7 +73,7 @@ DragPanel::DragPanel(Session& session, QWidget* parent)
 }
 
 void DragPanel::spaceChanged() {
-  // Joint-space guiding is always free (API.md startDrag): offer only that.
+  // Joint-space guiding is always free (docs/api.md, "Settings and their ranges", startDrag): offer only that.
   const bool joint = space_->currentData().toInt() == 1;
   if (joint) type_->setCurrentIndex(type_->findData(3));
   type_->setEnabled(!joint);

@@ -50,7 +50,7 @@ JointJog::JointJog(const xmate::model::RobotSpec& spec, int joint, int direction
 
 xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
   if (!started_) {
-    q_ = state.q;  // at start the command equals the measured position (SPEC.md §5)
+    q_ = state.q;  // at start the command equals the measured position (docs/robot_models.md, "Command rules")
     started_ = true;
   }
   const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);

@@ -15,7 +15,7 @@
 
 namespace rci::ui {
 
-// Jog speeds at 100 % of the speed slider (fractions of the model's limits, SPEC.md §5).
+// Jog speeds at 100 % of the speed slider (fractions of the model's limits, docs/robot_models.md, "Limits").
 inline constexpr double kJogJointSpeedFraction = 0.5;    // of dq_max
 inline constexpr double kJogJointAccelFraction = 0.25;   // of ddq_max
 inline constexpr double kJogTranslationSpeed = 0.25;     // m/s

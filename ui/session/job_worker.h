@@ -1,5 +1,5 @@
 // JobWorker: one std::thread that runs queued jobs in order and, while idle, an optional periodic
-// idle job (the Session's command and motion workers, DESIGN.md "Threads").
+// idle job (the Session's command and motion workers, docs/architecture.md, "Threads and hand-offs").
 #pragma once
 
 #include <chrono>

@@ -66,8 +66,8 @@ void RobotView::buildPlaceholder(const QString& reason) {
 }
 
 void RobotView::build3D() {
-  // Qt3D's OpenGL renderer, as the render tests use (DESIGN.md): Qt 6.4's RHI renderer returns
-  // QRenderCapture images upside down and draws lines with a different gamma.
+  // Qt3D's OpenGL renderer, as the render tests use (docs/architecture.md, "The 3D view"): Qt 6.4's
+  // RHI renderer returns QRenderCapture images upside down and draws lines with a different gamma.
   if (qEnvironmentVariableIsEmpty("QT3D_RENDERER")) qputenv("QT3D_RENDERER", "opengl");
   window_ = new Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::OpenGL);
   window_->defaultFrameGraph()->setClearColor(kBackground);

@@ -16,7 +16,7 @@
 namespace rci::ui {
 namespace {
 
-constexpr int kCollisionBit = 15;  // SPEC.md §7 kCollision
+constexpr int kCollisionBit = 15;  // kCollision (docs/error_bits.md)
 
 void showSafetyBox(RobotView& view, const SafetyBox& box) {
   QMatrix4x4 frame;

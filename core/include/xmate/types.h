@@ -1,4 +1,4 @@
-// The robot models RCI Studio knows, as the vendor API names them (API.md, "Types").
+// The robot models RCI Studio knows, as the vendor API names them (docs/api.md, "Types"; docs/robot_models.md).
 #pragma once
 
 namespace xmate {
