@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Assembles one model's description (see robot_generator.h): shells, meshes, mass estimates
 // (published link masses spread over the shell; an unpublished base mass from the mean density of
 // the published links), URDF text; then writes the files.

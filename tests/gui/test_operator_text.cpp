@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_operator_text: the window's words (ui/text/operator_text.h) -- every error bit has a plain
 // title, what happened and what to do without programmer words; joints beyond their limits and the
 // TCP outside the safety box are described with numbers and the way back; the library's and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pins the RCI wire format: sizes, field offsets, byte order, round trips, and rejection of
 // datagrams and payloads of the wrong length or with impossible values.
 #include <QtTest>

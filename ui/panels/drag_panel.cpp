@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Drag panel: validated startDrag (parameter_checks), stopDrag, guiding state from the live state.
 #include "panels/drag_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Jog command generators: ramped velocity along one axis, braking before limits, clean finish.
 #include "panels/jog_motion.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real-time side of a jog: per-cycle command generators for Robot::Control(). While the jog
 // button is held the axis ramps up to the jog speed; on release (or a stop request) it ramps down
 // and the motion ends with MotionFinished. It brakes on its own before a soft or hardware limit.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JogRamp: the 1-D velocity profile of a jog -- velocity ramps toward a target with bounded
 // acceleration and jerk (docs/robot_models.md, "Command rules": velocity continuous and
 // differentiable), one 1 ms cycle at a time, on the real-time thread (no allocation, no Qt).

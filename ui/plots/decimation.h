@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Min/max-per-pixel-column decimation (docs/architecture.md, "Live plots at 1 kHz") and the half-pixel line
 // simplification that follows it: a single-sample spike survives at any zoom.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JobWorker: one std::thread that runs queued jobs in order and, while idle, an optional periodic
 // idle job (the Session's command and motion workers, docs/architecture.md, "Threads and hand-offs").
 #pragma once

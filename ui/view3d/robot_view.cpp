@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3D robot view widget: placeholder or Qt3D window, setters, camera framing and capture
 // (robot_view.h); pointer handling is in robot_view_input.cpp.
 #include "robot_view.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exceptions thrown by the RCI client library (docs/api.md, "Exceptions").
 // Every one is an xmate::XmateException, itself a std::runtime_error with a readable message.
 #pragma once

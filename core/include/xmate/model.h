@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Kinematics and dynamics of an xMate arm (docs/api.md, "XmateModel"; docs/kinematics.md).
 // The model is built at run time from the robot's URDF (resources/robots/) with urdfdom.
 // Poses are 4x4 homogeneous matrices in row-major order, metres and radians.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Blocking point-to-point moves built on Robot::Control (docs/api.md, "MOVEJ, MOVEL, MOVEC"): MOVEJ in joint space,
 // MOVEL on a straight line, MOVEC on a circular arc, all with jerk-limited timing.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The data exchanged with the controller every millisecond (docs/protocol.md, "Real-time datagrams")
 // and the callback command types of the vendor API (docs/api.md, "Types"). Plain structs, no behaviour.
 #pragma once

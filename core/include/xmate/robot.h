@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xmate::Robot: the client side of RCI (docs/api.md, "xmate::Robot"). TCP commands run on the
 // caller's thread; the 1 kHz UDP exchange runs on a dedicated real-time thread per robot.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Names, meanings and remedies of the controller's error bits (docs/error_bits.md).
 #include "client/error_bits.h"
 

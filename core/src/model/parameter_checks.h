@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the controller accepts for each setting (docs/api.md, "Settings and their ranges"; docs/protocol.md choices):
 // one place for the client (which throws std::invalid_argument), the simulator (which answers
 // kInvalidArgument) and the GUI's editors (which explain the refusal).

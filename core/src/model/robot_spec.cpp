@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numbers transcribed from the vendor's xCore RCI user manual V2.0 (sections 2.3.1, 2.4.4, 2.4.5) and
 // public link-mass estimates; docs/robot_models.md lists them all. Degrees and millimetres are converted
 // here, once.

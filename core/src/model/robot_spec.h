@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The published facts about each xMate model (docs/robot_models.md), in SI units, in one place.
 // Everything else -- the URDF generator, the model, the planners, the simulator, the GUI's
 // editors -- reads limits and geometry from here.
