@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Manual section 2.5.1: connect (with a bounded reconnect loop), MOVEJ to a start pose, MOVEL 10 cm
 // down with the kinematic model, then a Cartesian callback that moves the TCP along an arc in the
 // x-z plane and returns to the start after one period (10 s), ending with MotionFinished.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Manual section 2.5.2: read the controller's address from xmate.ini ([network] ip=..., port=...),
 // report the motor state, power on, MOVEJ to a start pose, then a joint-space S-curve back to zero
 // on the 6-axis xMate 7. Linux version of the manual's program; usage: ini_joint_motion [INI_FILE]

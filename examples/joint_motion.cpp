@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Manual section 2.3.3: read the robot's state, MOVEJ to a start pose, then a joint-space S-curve
 // inside a JointControl callback that ends with MotionFinished. Linux version of the manual's
 // program; usage: joint_motion [HOST:PORT] (default 127.0.0.1:1337, e.g. a running rci-sim).

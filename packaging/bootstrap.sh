@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The README's two commands:
 #   packaging/bootstrap.sh run    install what is missing, build, start RCI Studio (rci-studio) on the built-in simulator
 #   packaging/bootstrap.sh test   install what is missing, build, run every test

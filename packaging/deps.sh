@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 packages RCI Studio needs to build, test and run, skipping those present.
 # Used by the README's two commands (packaging/bootstrap.sh); safe to run again.
 set -eu

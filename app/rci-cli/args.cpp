@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Argument helpers and the usage text of rci-cli.
 #include <cerrno>
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli's commands and the small argument helpers they share. Each command returns the process
 // exit code: 0 success, 1 failure at run time, 2 bad arguments (UsageError).
 #pragma once

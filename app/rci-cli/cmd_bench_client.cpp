@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli bench client: what one cycle costs the client -- decode the RobotState, publish it,
 // call a JointControl callback, check and encode the RobotCommand, send it -- timed on the exact
 // production path (client::processDatagram) with states fed from memory, against two references

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli bench loop: a 1 kHz JointControl loop (a slow out-and-back swing of joint 1) against an
 // in-process simulator (sim::Server, real-time clock by default) or a given robot. Prints the cycle
 // period statistics, jitter, late and lost cycles, the command success rate, and the KUKA RSI

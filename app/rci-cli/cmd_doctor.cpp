@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli doctor: is this machine fit for a 1 kHz control loop? Each fact comes with a verdict and,
 // when it is not good, what to do. SCHED_FIFO and mlockall are actually tried (on a helper thread).
 #include <dirent.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli [model NAME]: the published limits of one model (from core/src/model/robot_spec.cpp).
 #include <cstdio>
 #include <numbers>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli run: loads a program, connects to a robot (or starts an in-process simulator for the
 // program's model: real-time clock, or lock-step with --fast), runs the pre-flight and the executor
 // (core/src/teach), prints a line per instruction, and writes the run report. Ctrl-C stops the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli state: a live readout of one robot's state (q, torques, TCP pose, mode, error bits by
 // name, command success rate), refreshed in place on a terminal, one block per refresh otherwise.
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-cli: headless tools for xMate robots (docs/client.md). Without arguments it describes the
 // default model; subcommands read a robot's state live, check the machine's real-time setup, and
 // benchmark the 1 kHz loop and the client's cost per cycle, and run taught programs headless.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-sim: the simulated xMate controller as a program. Parses the command line, starts the
 // server (and the control port if asked), prints one status line, and runs until SIGINT/SIGTERM.
 #include <pthread.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parsing and validation of rci-sim's command line (options.h).
 #include "options.h"
 

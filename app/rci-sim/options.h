@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-sim's command line: the options, their defaults, and their validation.
 #pragma once
 

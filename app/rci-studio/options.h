@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Command-line options of rci-studio: --model, --robot HOST:PORT, --lockstep, --screenshot FILE.
 #pragma once
 

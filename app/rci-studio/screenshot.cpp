@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The --screenshot run of rci-studio (screenshot.h).
 #include "screenshot.h"
 

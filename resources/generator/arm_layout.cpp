@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shell layout rules (see arm_layout.h). Joint placements come from model::chainFromDh, so the
 // shells follow the same frames the URDF joints use. Sizes are in units of the housing radius.
 #include "generator/arm_layout.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the shell solids of each link go: joint housings around the joint axes, tubes between
 // consecutive joint centres, a pedestal under joint 1 and a flange disc on the last link, all
 // sized from the model's DH table and joint torques (robot_spec.h).

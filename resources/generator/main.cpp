@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-robotgen: writes the robot descriptions (URDF) and link meshes (STL) of every xMate model
 // from core/src/model/robot_spec.cpp. Usage: rci-robotgen <data root> [model ...]
 #include <cstring>

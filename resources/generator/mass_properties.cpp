@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Volume integrals of solids of revolution, turned into line integrals along the profile
 // (Green's theorem in the (r, z) half-plane), and their combination into link inertias.
 #include "generator/mass_properties.h"

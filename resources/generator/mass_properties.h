@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mass, centre of mass and inertia of a link modelled as a set of solids of uniform density
 // (overlaps counted twice), computed exactly from the solids' profile curves.
 #pragma once

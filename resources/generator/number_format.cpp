@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shortest round-trip number text and significant-digit rounding (see number_format.h).
 #include "generator/number_format.h"
 

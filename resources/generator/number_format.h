@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How rci-robotgen prints numbers: shortest round-trip decimal text, so the generated files are
 // byte-for-byte reproducible and 0.3415 stays "0.3415" while pi/2 keeps every digit.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Assembles one model's description (see robot_generator.h): shells, meshes, mass estimates
 // (published link masses spread over the shell; an unpublished base mass from the mean density of
 // the published links), URDF text; then writes the files.
@@ -45,7 +46,7 @@ std::string estimateNote(const GeneratedLink& link, double volume, double mean_d
   std::string mass_part;
   if (link.mass_published) {
     mass_part = "mass " + formatNumber(link.urdf.inertial.mass) +
-                " kg is the public estimate of SPEC.md section 6.";
+                " kg is the public estimate listed in docs/robot_models.md, \"Link masses\".";
   } else {
     mass_part = "mass not published: " + formatNumber(link.urdf.inertial.mass) + " kg = shell volume " +
                 formatNumber(estimate(volume)) + " m^3 times " + formatNumber(estimate(mean_density)) +

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-robotgen's whole job for one model: link shells -> meshes and estimated inertials -> URDF,
 // and writing them under a data root (resources/robots/<model>.urdf, meshes/<model>/<link>.stl).
 #pragma once

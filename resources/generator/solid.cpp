@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Profile pieces, the two profile shapes the shells use, and solid placement (see solid.h).
 #include "generator/solid.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The solids a link shell is made of: solids of revolution, each a profile curve in the (r, z)
 // half-plane turned about its own z axis and placed in a link frame. The mesher and the
 // mass-property code read the same solids, so the inertia belongs to the shape that is drawn.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Binary STL writer and reader (see stl_io.h). Bytes are assembled explicitly in little-endian
 // order so the output does not depend on the host.
 #include "generator/stl_io.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Binary STL: little-endian, 80-byte header, one facet normal + three float vertices per
 // triangle, metres. Writing is deterministic; reading is used by the tests.
 #pragma once

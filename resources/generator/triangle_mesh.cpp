@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lathe meshing of profiles and assembly of shell meshes (see triangle_mesh.h).
 #include "generator/triangle_mesh.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Indexed triangle meshes of the link shells: each solid of revolution becomes one closed,
 // outward-facing surface (counter-clockwise seen from outside).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes the URDF text (see urdf_writer.h). The frame convention is chain.h's: link i's frame
 // sits on joint i's axis, joint i+1's origin is the fixed part of DH row i.
 #include "generator/urdf_writer.h"
@@ -23,11 +24,12 @@ std::string originElement(const Eigen::Isometry3d& t) {
 
 std::string header(const model::RobotSpec& spec) {
   return "<?xml version=\"1.0\"?>\n"
-         "<!-- GENERATED FILE, DO NOT EDIT BY HAND. Written by rci-robotgen (resources/generator) from\n"
+         "<!-- SPDX-License-Identifier: Apache-2.0\n"
+         "     GENERATED FILE, DO NOT EDIT BY HAND. Written by rci-robotgen (resources/generator) from\n"
          "     core/src/model/robot_spec.cpp; change those and build the target regenerate-robots\n"
          "     (docs/robot_descriptions.md).\n"
          "     " + std::string(spec.display_name) + ": joint placements from the DH table of the vendor manual\n"
-         "     (SPEC.md section 6), joint limits from SPEC.md section 5 (position rad, velocity rad/s,\n"
+         "     (docs/robot_models.md), joint limits from its limit tables (position rad, velocity rad/s,\n"
          "     effort Nm). Frames: link i sits on joint i's axis; base_link is the robot base frame.\n"
          "     ESTIMATES: every mass, centre of mass and inertia below is an estimate (see the comment\n"
          "     in each link and docs/robot_descriptions.md). -->\n";

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // URDF text of one robot model: joints and limits from robot_spec.h (placed by chainFromDh),
 // link inertials and meshes as the generator worked them out.
 #pragma once

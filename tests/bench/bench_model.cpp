@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-bench-model: our kinematics, dynamics and IK side by side with KDL on the same URDF, plus
 // the 7-axis joint S-curve plan. Prints median time per call and the largest difference from KDL.
 // Usage: rci-bench-model [--quick]      (results quoted in docs/performance.md)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-bench-plot: ms per redraw frame of the live plots (7 joints x 3 signals, 1 kHz, 10 s window) against
 // Qt Charts' own QLineSeries (fed raw or decimated points), and CPU share while streaming. Results: docs/performance.md ("Live plots").
 #include <QApplication>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-bench-window: CPU share of one core of the whole rci-studio window (plots, 3D view, panels,
 // embedded simulator) with the arm at rest and while it replays a program, against the same program
 // replayed headless (simulator + client + executor, no window) afterwards in the same run.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: Apache-2.0
 # Measures the CPU share of one core of rci-studio streaming from its built-in simulator (idle arm,
 # 30 Hz plots and status, 3D view), under xvfb (3D rendered with Mesa) and offscreen (no 3D), and as
 # a reference in the same run the simulator + client alone (rci-sim streaming to `rci-cli state`).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers of client_test_support.h.
 #include "client_test_support.h"
 

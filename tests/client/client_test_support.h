@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared helpers of the client tests: a simulator on a free loopback port (lock-step clock), a
 // robot connected to it, bounded waits, and small motions that end with MotionFinished.
 #pragma once

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The examples test: installs the built project into a temporary prefix, builds examples/ against
 # it like a user's project (find_package(RCI)), and runs each example to completion (exit 0)
 # against the installed rci-sim on a free port with the lock-step clock.

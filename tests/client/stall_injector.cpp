@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StallInjector (stall_injector.h): SIGUSR2 sent with tgkill to the "rci-rt" thread; the handler
 // sleeps for the requested time on that thread.
 #include "stall_injector.h"

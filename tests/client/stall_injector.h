@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test helper: stalls the client's real-time thread ("rci-rt") for a chosen time, as a preemption
 // or a slow callback would, without any hook in the product: a signal sent to that thread runs a
 // handler that sleeps (nanosleep is async-signal-safe). One injector per process at a time.

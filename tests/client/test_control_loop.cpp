@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Robot::Control() against the lock-step simulator: joint, Cartesian and torque callbacks that end
 // with MotionFinished, the startMove pairing rules, a callback that throws, invalid commands, and
 // what the session publishes meanwhile (state ring, counters).

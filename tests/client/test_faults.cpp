@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How Control() ends when things go wrong, against the lock-step simulator: each error bit the
 // controller raises ends it with a ControlException naming the bit (and carrying the log); collision
 // -> power off -> recovery -> moving again; e-stop; packet loss -> instability; reordered and

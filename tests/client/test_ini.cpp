@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // INIParser: sections, keys, comments, whitespace, quotes, typed getters, missing keys, and the
 // line-numbered error for a malformed file.
 #include <QtTest>

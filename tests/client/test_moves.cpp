@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MOVEJ, MOVEL and MOVEC against the lock-step simulator: they reach their targets (1e-4 rad,
 // 0.1 mm), with and without a model, on a 7-axis and a 6-axis arm; and they refuse, with a
 // MotionException saying why, a start that is not where the robot is, unreachable targets and

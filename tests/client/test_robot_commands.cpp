@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xmate::Robot's TCP calls against the simulator over loopback: lazy connect, every command's round
 // trip and its effect on the controller, client-side validation (nothing sent), refusals,
 // version mismatch, reboot and reconnect, and receiveRobotState.

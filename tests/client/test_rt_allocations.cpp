@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real-time loop allocates nothing: this binary replaces the global operator new/delete with
 // versions that count the calls made on the client's real-time thread (named "rci-rt"), and
 // checks that 1000 steady-state cycles of a JointControl run (receive, decode, publish, callback,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A stalled client loop against the simulator's real-time clock (a late answer counts as lost): the
 // real-time thread is stopped for 2, 5 and 10 ms at chosen points of a MOVEJ, MOVEL and MOVEC (and
 // of an executor's MOVEJ), and every motion still completes at its target without an error bit;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Edge topology, welding and tetrahedron-method mass properties (see mesh_checks.h).
 #include "mesh_checks.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Independent checks of triangle meshes for the description tests: edge topology (closed,
 // consistently wound), and volume / centre / inertia by the tetrahedron method, which shares no
 // code with the generator's profile integrals.

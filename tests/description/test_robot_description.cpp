@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_robot_description: for every xMate model, the committed URDF and meshes against the DH
 // table, the robot spec and the generator; and the URDF loader's conversions and error messages.
 #include <QTemporaryDir>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: decodeRobotCommand on arbitrary datagrams (290 bytes, or the older 258 without
 // dynamic_wall). It must never crash; an accepted datagram must encode back to the same fields.
 #include <cstring>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: decodeRobotState on arbitrary datagrams. It must never crash, and a datagram
 // it accepts must encode back to exactly the same bytes (every field is read bit-exactly).
 #include <cstring>

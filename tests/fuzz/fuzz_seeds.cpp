@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes the fuzzers' seed corpus: valid encoded messages of every kind, so libFuzzer starts from
 // inputs that get past the length checks. Usage: fuzz_seeds OUTPUT_DIR (creates robot_state/,
 // robot_command/ and tcp/ in it).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target for the TCP channel. The input is one payload (starting with the Command code);
 // it goes to the request decoder its first four bytes name, to every response decoder, and to
 // sim::Controller::handleRequest. Nothing may crash, and the controller must answer every request

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers shared by the tests of tests/gui/ (test_session, test_main_window).
 #pragma once
 

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Runs one test executable N times in a row while two CPU-burning processes load the machine, and
 # stops at the first failure. For the GUI scenarios that must hold on a busy lab PC, e.g.:
 #   tests/gui/repeat_under_load.sh 20 build/tests/gui/test_operator_scenario

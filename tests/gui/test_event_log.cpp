@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_event_log: the Messages dock as the event log -- repeats coalesce into one row with "(×N)",
 // rows filter by severity, selected rows copy (Ctrl+C and Copy), every event goes to the rotating
 // log file under $XDG_STATE_HOME/rci-studio (a temporary folder here), an unwritable folder is said

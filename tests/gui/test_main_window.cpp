@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_main_window: the whole RCI Studio window (offscreen) against the embedded lock-step
 // simulator: connect, power on through the Power panel, status bar, DO->DI loop-back, an injected
 // collision in the Safety panel, drag changing the robot mode, refused input, disconnect, a

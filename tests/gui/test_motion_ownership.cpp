@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_motion_ownership: a motion never outlives its session and Stop reaches it at once, through
 // the window's own widgets: Step -> Disconnect -> Connect -> jog (accepted, not "a motion is already
 // running"); Step -> quit (the window and session end, bounded); a program running on a

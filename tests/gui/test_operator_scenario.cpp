@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_operator_scenario: the operator's whole teach loop in the real window, through its widgets,
 // against the built-in simulator: connect -> power on -> hand-guide J7 into a soft limit (the
 // wall holds it, no stop) -> soft limits that leave the joint outside (a violation) -> recover

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_operator_text: the window's words (ui/text/operator_text.h) -- every error bit has a plain
 // title, what happened and what to do without programmer words; joints beyond their limits and the
 // TCP outside the safety box are described with numbers and the way back; the library's and the
@@ -303,8 +304,9 @@ void TestOperatorText::programFailureKeepsTheInstruction() {
   const QString raw = QStringLiteral(
       "instruction 3 (MOVEL \"P3\"): the controller aborted the motion: Control(kCartesianPosition): the controller "
       "stopped the motion at message_id 99 with error bits 10 kCommandJointVelocityLimitsViolation (commanded joint "
-      "velocity over the limit). What to do: check that the planned trajectory is continuous (SPEC.md §5), filter it "
-      "if needed (setFilters). Then call automaticErrorRecovery().");
+      "velocity over the limit). What to do: check that the planned trajectory is continuous and differentiable and "
+      "within the limits of the model (docs/error_bits.md), filter it if needed (setFilters). Then call "
+      "automaticErrorRecovery().");
   const OperatorMessage m = failure(raw);
   QVERIFY2(m.line().startsWith(QStringLiteral("Instruction 3 (MOVEL \"P3\"): The robot stopped the motion: Motion too "
                                               "fast for a joint.")),

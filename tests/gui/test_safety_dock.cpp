@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_safety_dock: the Safety panel in its dock of the whole window (offscreen, embedded lock-step
 // simulator) -- after an injected collision the active error comes first in plain words with what
 // to do, the Recover button lies inside the visible part of the dock at the default width and at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of rci::ui::Session against the embedded lock-step simulator: open, ticks and samples,
 // commands, IO loop-back, motions, stop, close, watchdog and a refused connection.
 #include <QSignalSpy>

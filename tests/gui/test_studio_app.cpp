@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_studio_app (under xvfb-run): runs the rci-studio program -- its option handling, and
 // --screenshot rendering the whole window with the 3D view to a PNG.
 #include <QImage>

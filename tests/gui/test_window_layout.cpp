@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_window_layout: the main window's layout on two offscreen screens, 1920x1080 and 1366x768
 // (the offscreen platform's screens come from a config file written at start): where the window
 // opens, its geometry remembered per screen size, the default dock sizes, every panel's controls

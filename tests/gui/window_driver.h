@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // WindowDriver: drives widgets of a window by object name the way an operator does -- brings the
 // dock that holds a widget to the front, clicks buttons, holds a button down, types a value into a
 // field -- for the GUI tests of tests/gui.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers of the model tests (see model_test_support.h).
 #include "model_test_support.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared helpers of the model tests: arms with known (random) inertias built from the DH tables,
 // random configurations, DH reference frames, pose comparison.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Dynamics of all four xMate models: on the DH-table chain with random link inertias (internal
 // API) and on the URDF models (public XmateModel). Checks M(q) symmetric positive definite,
 // M ddq = RNEA(q,0,ddq) - RNEA(q,0,0), full = inertial + coriolis + gravity, the power balance

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Kinematics of all four xMate models through the public XmateModel (loaded from the URDFs): FK
 // against the DH table, link frames, TCP, Jacobian against finite differences, the arm angle's
 // definition, the IK round trip on 100 000 random configurations per model, every IK return code.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of the net/ building blocks: SPSC ring order and overflow, seqlock consistency under a
 // concurrent writer, cycle statistics, and loopback UDP/TCP with their timeouts.
 #include <QtTest>

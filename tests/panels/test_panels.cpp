@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_panels: builds the dock panels on a Session with the embedded lock-step simulator (DO->DI
 // loop-back) and drives them with QTest: power, IO, thresholds, refusals, an injected collision,
 // recovery, drag, jog; plus the jog profile and limit braking on a simulated state loop.

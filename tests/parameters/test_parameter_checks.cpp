@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Each setting's range check accepts the documented edge values, refuses what lies beyond, and
 // says in its message which parameter and index were wrong and what range is allowed.
 #include <QtTest>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replaces the global operator new/delete with counting versions (see allocation_counter.h).
 #include "allocation_counter.h"
 

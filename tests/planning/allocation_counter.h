@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test support: counts calls of the global operator new (replaced in allocation_counter.cpp), so a
 // test can prove that a hot-path function does not allocate.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test support for the planning tests: running maxima of the finite differences of a signal
 // sampled every h seconds (the way the controller sees a plan), and random poses.
 #pragma once

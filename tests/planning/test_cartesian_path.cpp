@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of the MOVEL/MOVEC path geometry and timing (planning/cartesian_path.h,
 // cartesian_trajectory.h): every trajectory sampled at 1 ms.
 #include <cmath>

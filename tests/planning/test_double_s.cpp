@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of the scalar double-S profile (planning/double_s.h) and of CartMotionGenerator, which
 // is that profile within the planner's Cartesian translation limits.
 #include <cmath>

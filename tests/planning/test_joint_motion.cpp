@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of JointMotionGenerator (xmate/joint_motion.h): every plan sampled at 1 ms, for random
 // start/goal pairs on every model and speed ratios 0.05, 0.3 and 1.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of ui/plots: ring wrap-around and window queries, min/max decimation (spikes, bounds, order),
 // CSV export (content, atomic replace), freeze, signal selection, and the J^T external-torque mapping.
 #include <QApplication>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_program_gui: the Program panel driven through its widgets against the session's embedded
 // lock-step simulator -- drag the arm with injected forces, record J / L / C (via + target) with the
 // button, F9 and a DI trigger, save, reopen, go to, replay to within 1e-4 rad / 0.1 mm, pause and

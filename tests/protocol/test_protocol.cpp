@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pins the RCI wire format: sizes, field offsets, byte order, round trips, and rejection of
 // datagrams and payloads of the wrong length or with impossible values.
 #include <QtTest>
@@ -160,7 +161,7 @@ class TestProtocol : public QObject {
   }
 
   void tcpPayloadSizes() {
-    // The "bytes" column of RCI_WIRE.md: Command code (4) + fields.
+    // The "bytes" column of docs/protocol.md ("Command codes and payloads"): Command code (4) + fields.
     auto payload = [](const Frame& f) { return f.size() - kFrameHeaderSize; };
     QCOMPARE(payload(encodeFrame(1, ConnectRequest{})), size_t(6));
     QCOMPARE(payload(encodeFrame(1, ByteResponse{Command::kConnect, 0})), size_t(5));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test harness for sim::Controller (controller_harness.h).
 #include "controller_harness.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test harness for sim::Controller: sends TCP requests through handleRequest (encoded exactly as a
 // client would) and decodes the responses, and steps the 1 kHz cycle with joint, Cartesian or
 // torque commands answering the current state. No sockets.

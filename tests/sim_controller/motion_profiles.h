@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test helpers: analytic command profiles with known velocity, acceleration and jerk, to stream
 // into the simulated controller (the planners are tested elsewhere; these are independent).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim::Controller error bits: each of the 20 bits (docs/simulator_controller.md, "Error bits")
 // provoked by a command stream or a scene event, reported in state().errors (alone, where the
 // physics allows), with the motion stopped (robot_mode kReflex) and the bit kept until

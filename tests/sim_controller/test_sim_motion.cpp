@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim::Controller motion tests: holding and brakes, the five controller modes (joint position,
 // Cartesian position, joint impedance, Cartesian impedance, torque) following commands, filters,
 // lost commands and the success rate, and step()'s cost and allocations.

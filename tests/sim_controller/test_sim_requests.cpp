@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim::Controller TCP requests: the response to every command code, the re-check of every value
 // (kInvalidArgument), the refusals that depend on the robot's state (kNotPossible and the
 // StartMove/StopMove/recovery statuses), malformed and unknown requests, LoadRobotModel's layout,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim::Controller safety functions and scene interaction: collision detection from the estimated
 // external torque (and a wrong setLoad showing up as one), power off and brakes, recovery, the
 // Cartesian safety box, soft limits with and without auto_limit, and hand guiding that moves only

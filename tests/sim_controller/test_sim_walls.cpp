@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim::Controller limits that leave a way back: while hand guiding, joint limits and the safety box
 // are walls (a spring, then the brakes) that no pull carries the arm through, without an error bit;
 // a joint or TCP beyond a limit (placed there by the scene) may be guided or jogged back, and only

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // RawClient: TCP requests with framing, UDP states in and commands out (raw_client.h).
 #include "raw_client.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A minimal RCI client for the simulator tests, built directly on the protocol codecs and the
 // sockets (not on xmate::Robot): it shows exactly what goes over the wire.
 #pragma once

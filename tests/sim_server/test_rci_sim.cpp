@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of the rci-sim program: --print-port and a working session, the status line, the control
 // port, option validation and its messages, the non-loopback warning, and clean shutdown.
 #include <QProcess>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of rci-sim's control port: each command over a real TCP connection, its effect as a client
 // sees it on the RCI wire, and the error messages for wrong input.
 #include <QtTest>

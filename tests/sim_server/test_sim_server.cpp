@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of sim::Server over real loopback sockets with a raw client: the Connect handshake, the
 // 1 kHz stream, lock-step stepping and lost answers, every packet fault as seen on the wire,
 // session rules (one at a time, the busy answer naming the holder, idle connections and silent

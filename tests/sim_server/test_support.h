@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared helpers of the simulator server tests: a started server on a free port, bounded waits
 // for a condition, a raw client already in a session, and motion start.
 #pragma once

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # test_cli_run: `rci-cli run` on the example program against the in-process simulator exits 0 and
 # writes a finished report, on the real-time clock by default and on the lock-step clock with
 # --fast, and says which clock ran; a usage error exits 2; a program refused by the pre-flight

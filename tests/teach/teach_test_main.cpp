@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // test_program's main: runs the program/format tests and the pre-flight tests in one executable
 // (one Qt Test executable per area).
 #include <QCoreApplication>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The executor end to end against the lock-step simulator over loopback: teach four waypoints by
 // dragging the arm with injected forces (J, L, C via + target), save, reload and replay them to
 // within 1e-4 rad / 0.1 mm with no error bit; pause and resume mid-move (the arm stops on its path

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pre-flight and preview without a robot: every problem of a program is reported by instruction
 // (unreachable pose, joint and soft limits, safety box for targets and paths, degenerate arcs,
 // invalid fields); a clean program gives a TCP polyline per motion; and the executor's time

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The program file format: the JSON reader/writer (escapes, numbers, line:column errors), programs
 // round-tripping through files, every kind of bad field named by instruction and field, atomic
 // saving that never loses the previous file, and truncated or garbled inputs that never crash.

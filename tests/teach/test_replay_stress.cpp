@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replays after reconnects, under load: 30 rounds of connect -> replay a saved MOVEJ/MOVEL/MOVEC
 // program with the teach Executor (as the window does) -> disconnect, in one process, against the
 // in-process simulator on its real-time clock, while two threads burn CPU and the client's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3D view without a display: the factory's placeholder (no hang under the offscreen platform),
 // link meshes of every model through assimp, link poses against the core's FK, tints, camera maths,
 // recognising software OpenGL renderers.

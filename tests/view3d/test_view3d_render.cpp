@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3D view drawing for real (xvfb-run + Mesa): the robot is visible and upright in a capture, a
 // different pose changes the picture, every model renders, pointer events orbit/pan/zoom/pull, a
 // Session with the simulator drives it, and software OpenGL gets a live-update budget.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Collision panel: validated thresholds sent with setCollisionBehavior; |tau_ext| bars per joint.
 #include "panels/collision_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Collision panel: per-joint collision thresholds (setCollisionBehavior, within the SPEC maxima)
 // and live bars of |external joint torque| against each threshold.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Drag panel: validated startDrag (parameter_checks), stopDrag, guiding state from the live state.
 #include "panels/drag_panel.h"
 
@@ -73,7 +74,7 @@ DragPanel::DragPanel(Session& session, QWidget* parent)
 }
 
 void DragPanel::spaceChanged() {
-  // Joint-space guiding is always free (API.md startDrag): offer only that.
+  // Joint-space guiding is always free (docs/api.md, "Settings and their ranges", startDrag): offer only that.
   const bool joint = space_->currentData().toInt() == 1;
   if (joint) type_->setCurrentIndex(type_->findData(3));
   type_->setEnabled(!joint);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Drag panel: hand guiding -- space (joint / Cartesian), type (translation / rotation / free),
 // start / stop (startDrag / stopDrag), and whether the robot is being guided.
 #pragma once

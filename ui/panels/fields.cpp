@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The panels' shared editor pieces: number fields, refusal marks, compact sizes, the inline message line.
 #include "panels/fields.h"
 

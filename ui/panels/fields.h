@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small building blocks shared by the panels' editors: number fields with units and tooltips,
 // the inline message line that says why a value was refused, the red mark on a refused field, and
 // the compact sizes that let rows of buttons and combo boxes fit a narrow dock.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Filters panel: cut-offs checked with parameter_checks (refusal) and the 10-100 Hz advice (warning).
 #include "panels/filters_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Filters panel: the three command low-pass cut-offs (setFilters): joint, Cartesian, torque.
 // Values outside 10-100 Hz are sent with a warning; outside the allowed range they are refused.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Impedance panel: three validated editors, each with its own Apply and inline message.
 #include "panels/impedance_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Impedance panel: joint stiffness (setJointImpedance), Cartesian stiffness (setCartesianImpedance)
 // and the desired wrench of Cartesian impedance mode (setCartImpDesiredTau).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IO panel: DO switches send setDO through the session; DI lamps show the polled inputs.
 #include "panels/io_panel.h"
 

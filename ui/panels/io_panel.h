@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IO panel: the six digital outputs (switches, setDO) and the six digital inputs (lamps, live).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Jog command generators: ramped velocity along one axis, braking before limits, clean finish.
 #include "panels/jog_motion.h"
 
@@ -57,7 +58,7 @@ xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
   const int cycles = started_ ? elapsedCycles(last_id_, state.message_id) : 1;
   last_id_ = state.message_id;
   if (!started_) {
-    q_ = state.q;  // at start the command equals the measured position
+    q_ = state.q;  // at start the command equals the measured position (docs/robot_models.md, "Command rules")
     started_ = true;
   }
   const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real-time side of a jog: per-cycle command generators for Robot::Control(). While the jog
 // button is held the axis ramps up to the jog speed; on release (or a stop request) it ramps down
 // and the motion ends with MotionFinished. It brakes on its own before a soft or hardware limit.
@@ -18,7 +19,7 @@
 
 namespace rci::ui {
 
-// Jog speeds at 100 % of the speed slider (fractions of the model's limits).
+// Jog speeds at 100 % of the speed slider (fractions of the model's limits, docs/robot_models.md, "Limits").
 inline constexpr double kJogJointSpeedFraction = 0.5;    // of dq_max
 inline constexpr double kJogJointAccelFraction = 0.25;   // of ddq_max
 inline constexpr double kJogTranslationSpeed = 0.25;     // m/s

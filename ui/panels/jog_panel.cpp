@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Jog panel: the buttons and speed slider; the motion itself is in jog_motion (real-time side).
 #include "panels/jog_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Jog panel: press-and-hold buttons for joint +/- per joint and Cartesian +/- (x, y, z, rx, ry, rz)
 // with a speed slider. Each press runs one ramped jog motion through Session::runMotion().
 #pragma once

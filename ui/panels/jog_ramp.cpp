@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JogRamp: each cycle the acceleration that would land exactly on the target velocity, limited by
 // the jerk and acceleration bounds; the last step lands exactly (so the ramp ends exactly at rest).
 #include "panels/jog_ramp.h"

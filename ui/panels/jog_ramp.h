@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // JogRamp: the 1-D velocity profile of a jog -- velocity ramps toward a target with bounded
-// acceleration and jerk (SPEC.md §5: velocity continuous and differentiable), one 1 ms cycle at a
-// time, on the real-time thread (no allocation, no Qt).
+// acceleration and jerk (docs/robot_models.md, "Command rules": velocity continuous and
+// differentiable), one 1 ms cycle at a time, on the real-time thread (no allocation, no Qt).
 #pragma once
 
 namespace rci::ui {

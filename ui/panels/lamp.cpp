@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lamp: painting of the round indicator.
 #include "panels/lamp.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lamp: a small round indicator (on/off, with a colour for "on") used by the panels for motor
 // power, DI levels, stop states and error bits. Its state is the Qt property "on" (tests read it).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PanelBase: command routing, status line, settings and session hooks shared by the panels.
 #include "panels/panel_base.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PanelBase: what every dock panel shares -- the session, sending commands through Session::run()
 // with the result shown in the panel's status line, settings persistence (QSettings group per
 // panel), the robot model in use, and the refresh on each display tick.

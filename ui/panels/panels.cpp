@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // createPanels (window/parts.h): builds every dock panel for a session and says where it docks:
 // operation (power, jog, drag, IO, safety, simulator) on the right; the Program panel (teach and
 // replay, the operator's main tool, which keeps its Run bar in view and scrolls the rest itself)

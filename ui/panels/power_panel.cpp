@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Power panel: buttons for setMotorPower(1/0), the motor lamp (polled motor state), reboot.
 #include "panels/power_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Power panel: motor power on/off with the motor-state lamp, and reboot of the controller.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ProgramModel: the instruction table of the Program panel -- display, in-place edits (type, name,
 // speed), structural edits and drag & drop reordering of a teach::Program.
 #include "panels/program_model.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Program panel: layout, recording waypoints (button, F9, DI trigger; C takes via then target), and
 // editing the instruction list (reorder, delete, duplicate, type, speed, name, touch-up, logic insert/apply).
 #include "panels/program_panel.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Program panel (issue 5, "In the window"): teach by recording waypoints (button, F9, DI trigger) as
 // MOVEJ / MOVEL / MOVEC, edit the instruction list, go to a waypoint, run / pause / resume / step /
 // stop the program with the teach executor (teach/executor.h) through Session::runMotion, open and

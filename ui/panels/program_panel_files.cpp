@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Program panel: New / Open / Save / Save as, the unsaved-changes prompt (maybeSaveProgram, also the
 // window's close hook) and the dialogs behind replaceable functions (tests avoid modal dialogs).
 #include <QDir>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Program panel: running the program with the teach executor through Session::runMotion -- run,
 // step, pause, resume, stop, go to a waypoint, the progress display, the pre-flight problems and
 // the 3D view's program overlay (waypoints and planned path).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Safety box panel: validated box (parameter_checks) sent by setCartesianLimit, then recorded.
 #include "panels/safety_box_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cartesian safety box panel: size, centre and on/off of the box the TCP must stay in
 // (setCartesianLimit); records the box in the session's operator settings for the 3D view.
 #pragma once

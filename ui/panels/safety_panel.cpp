@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Safety panel (safety_panel.h): the live problems in operator words (text/operator_text.h), the
 // Recover button, the stop lamps and the 20 error conditions. Laid out to fit a narrow dock: every
 // text wraps, nothing needs more than about 340 px.

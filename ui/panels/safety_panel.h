@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Safety panel: what is wrong right now, first -- active errors, stops, joints beyond their limits
 // and the TCP outside the safety box, each in plain words with what to do -- and the Recover button;
 // then the emergency and guard stop lamps and the robot's mode; then all 20 error conditions by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Simulator panel: scene calls on the session's embedded sim::Server (server.h, "Scene").
 #include "panels/simulator_panel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Simulator panel (built-in simulator only): push the arm with an external wrench, press the
 // e-stop or guard stop, set DI levels, DO->DI loop-back. Disabled on a real robot.
 #pragma once

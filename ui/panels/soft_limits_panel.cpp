@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Soft limits panel: validated limits (parameter_checks) sent by setJointLimit, then recorded.
 // "Disabled" sends the hardware range, so the controller's soft limits no longer restrict.
 #include "panels/soft_limits_panel.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Soft joint limits panel: per-joint upper/lower limits in degrees within the hardware range,
 // on/off and auto-limit (setJointLimit); records them in the session's operator settings.
 #pragma once

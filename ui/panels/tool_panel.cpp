@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tool & payload panel: validated TCP frame (setCoor) and payload (setLoad) editors.
 #include "panels/tool_panel.h"
 

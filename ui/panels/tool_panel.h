@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tool & payload panel: the TCP frame relative to the flange (x, y, z, rx, ry, rz -> 4x4, setCoor)
 // and the payload (mass, centre of mass, inertia; setLoad).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AutoScale (auto_scale.h): grow at once, shrink late, keep a margin.
 #include "plots/auto_scale.h"
 

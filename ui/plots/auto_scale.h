@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AutoScale: a value-axis range that follows the data with hysteresis (grows at once, shrinks only when
 // the data use less than a third of it), so the axis does not jitter from frame to frame.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ChartCanvas (chart_canvas.h): the Qt Charts backend of PlotCanvas.
 #include "plots/chart_canvas.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ChartCanvas: PlotCanvas on Qt Charts -- the chart's axes, grid and titles, with the curves drawn
 // by a TraceLayer inside it (one polyline per series per frame, software rendering), value axes set
 // by the caller, and a plot area with a fixed left margin so that stacked charts line up.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // writeCsv (csv_export.h): fast number formatting (std::to_chars) into a QSaveFile.
 #include "plots/csv_export.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CSV export of recorded samples: a header with units ("time_s,q_J1_rad,..."), one row per sample,
 // written atomically (QSaveFile): an existing file is replaced only when the whole export succeeded.
 #pragma once

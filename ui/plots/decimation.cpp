@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MinMaxDecimator (decimation.h): per-column extremes of a time series, in one pass.
 #include "plots/decimation.h"
 

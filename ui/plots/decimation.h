@@ -1,4 +1,5 @@
-// Min/max-per-pixel-column decimation (DESIGN.md "Plotting at 1 kHz") and the half-pixel line
+// SPDX-License-Identifier: Apache-2.0
+// Min/max-per-pixel-column decimation (docs/architecture.md, "Live plots at 1 kHz") and the half-pixel line
 // simplification that follows it: a single-sample spike survives at any zoom.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ExternalTorqueMap (external_torque.h): the core's J^T mapping on the model loaded from its URDF.
 #include "plots/external_torque.h"
 

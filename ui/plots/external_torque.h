@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ExternalTorqueMap: external joint torques tau = J(q)^T F from the TCP wrench in the base frame that
 // RobotState carries (tau_ext_in_base). Allocation-free, cheap enough for 1 kHz on the GUI thread.
 #pragma once

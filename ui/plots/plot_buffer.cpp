@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PlotBuffer (plot_buffer.h): the ring, its window queries, and the state-sample-to-channels copy.
 #include "plots/plot_buffer.h"
 

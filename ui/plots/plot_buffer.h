@@ -1,4 +1,5 @@
-// PlotBuffer: the time-indexed ring of recorded samples (DESIGN.md "Plotting at 1 kHz"): one time
+// SPDX-License-Identifier: Apache-2.0
+// PlotBuffer: the time-indexed ring of recorded samples (docs/architecture.md, "Live plots at 1 kHz"): one time
 // column and kChannelCount value columns, preallocated for a number of seconds; push() never allocates.
 #pragma once
 

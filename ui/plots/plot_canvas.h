@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PlotCanvas: the small drawing interface the plots are written against, so the Qt Charts backend
 // (deprecated from Qt 6.10) can be swapped for Qt Graphs without touching the data path.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Names and units of the plotted signals (plot_signals.h).
 #include "plots/plot_signals.h"
 

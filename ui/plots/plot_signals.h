@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The signals the live plots record per joint: names, units and which chart (quantity) shows them.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // createPlotsWidget (ui/window/parts.h): builds the live plot area and feeds it from a Session --
 // samples on samplesArrived, the arm's joint count and J^T model (with the tool) when it opens.
 #include <exception>

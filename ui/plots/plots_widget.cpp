@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PlotsWidget (plots_widget.h), data path: recording, the timed redraw (window query, min/max
 // decimation, one replace per series), auto-scaling, freeze and export.
 #include "plots/plots_widget.h"

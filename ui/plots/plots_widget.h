@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PlotsWidget: the live plot area -- three stacked charts over a 62 s recording ring, joint and signal
 // choosers, time window, freeze/resume, CSV export; fed by addSamples(), redrawn on a 30 Hz timer.
 #pragma once

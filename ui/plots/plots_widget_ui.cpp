@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PlotsWidget (plots_widget.h), controls: the charts' layout and the one-row control strip (joint and
 // signal toggles, time window, freeze/resume, the export menu, the status line).
 #include <QCheckBox>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TraceLayer (trace_layer.h): data -> pixel mapping and polyline drawing of a chart's curves.
 #include "plots/trace_layer.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TraceLayer: the curves of one chart, drawn as plain QPainter polylines on an item inside the Qt
 // Charts scene. The chart keeps its axes, grid, titles and plot area; only the lines bypass
 // QLineSeries, whose every replace() strokes the whole line into a hit-test shape (1-2 us per point),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JobWorker: the queue-and-thread behind the Session's command and motion workers (job_worker.h).
 #include "session/job_worker.h"
 

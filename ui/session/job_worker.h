@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // JobWorker: one std::thread that runs queued jobs in order and, while idle, an optional periodic
-// idle job (the Session's command and motion workers; docs/architecture.md, "Threads"). Stopping it
+// idle job (the Session's command and motion workers; docs/architecture.md, "Threads and hand-offs"). Stopping it
 // never waits without bound: a job that does not end in time is abandoned with its thread.
 #pragma once
 

@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // Session: opens and closes links on background threads, runs commands and motions on worker
-// threads, and refreshes LiveState at 30 Hz on the GUI thread (session.h; DESIGN.md "Threads").
+// threads, and refreshes LiveState at 30 Hz on the GUI thread (session.h; docs/architecture.md,
+// "Threads and hand-offs").
 #include "session/session.h"
 
 #include <algorithm>

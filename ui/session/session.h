@@ -1,7 +1,9 @@
-// Session: the only door from the window to a robot (DESIGN.md, "Threads"). It owns the robot
-// client (xmate::Robot), and for the built-in simulator also the embedded sim::Server. Widgets
-// never touch the network: they read live() on tick(), receive state samples by samplesArrived(),
-// and hand commands to run() / runMotion(), which execute on worker threads.
+// SPDX-License-Identifier: Apache-2.0
+// Session: the only door from the window to a robot (docs/architecture.md, "Threads and
+// hand-offs"). It owns the robot client (xmate::Robot), and for the built-in simulator also the
+// embedded sim::Server. Widgets never touch the network: they read live() on tick(), receive state
+// samples by samplesArrived(), and hand commands to run() / runMotion(), which execute on worker
+// threads.
 #pragma once
 
 #include <QObject>

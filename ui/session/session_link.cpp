@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Opening and closing one session's link (robot client + embedded simulator) and the idle poll.
 #include "session/session_link.h"
 

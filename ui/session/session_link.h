@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Link: what one open session holds (robot client, embedded simulator, model, worker threads), how
 // it is opened (on a background thread) and torn down. Used by session.cpp only.
 #pragma once

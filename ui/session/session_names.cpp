@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Names of robot models and session targets as the window shows them (session.h).
 #include "session/session.h"
 

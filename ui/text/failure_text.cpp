@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Operator text for failed and refused commands (operator_text.h): the library's and the
 // controller's messages are recognised by exception type and by their known phrases, refusals
 // without a reason are explained from the live state, and the raw message stays as the detail.

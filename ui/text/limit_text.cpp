@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Operator text for joints beyond their limits and the TCP outside the safety box, from the live
 // state and the limits the window set (operator_text.h).
 #include <QCoreApplication>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Operator text for the 20 error bits, robot modes and safety stops, and the list of everything
 // wrong right now (operator_text.h). Limits and the box: limit_text.cpp; failures: failure_text.cpp.
 #include "text/operator_text.h"

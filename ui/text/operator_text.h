@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Operator text: the one place where the window turns error bits, robot modes, safety stops, joints
 // beyond their limits, the TCP outside the safety box and failed or refused commands into words for
 // the person at the robot -- what happened and what to press in this window. The programmer's words

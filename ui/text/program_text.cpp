@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Operator text for the pre-flight problems of a program (operator_text.h): the checker's sentences
 // are plain already; the window drops the solver's codes and says which button does the re-teach.
 #include <QCoreApplication>

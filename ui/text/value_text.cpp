@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Operator text for values an editor refuses before sending (operator_text.h): the parameter
 // checks name the call and its parameters ("setCollisionBehavior: upper_torque_thresholds_nominal[2]
 // = 90 is outside (0, 60] Nm"); the window names the field the operator typed into ("J3 threshold").

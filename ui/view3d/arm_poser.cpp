@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Builds the drawable arm from the URDF and poses its links with forwardKinematics (arm_poser.h).
 #include "arm_poser.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The robot as the 3D view draws it: each link's mesh, colour and visual offset from the model's
 // URDF, and every link pose at joint angles q from the core's forward kinematics.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenGL availability check of the 3D view (gl_probe.h).
 #include "gl_probe.h"
 

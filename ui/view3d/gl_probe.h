@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // Can this process show a Qt3D window? Checked before the 3D view creates one: Qt3D's renderer
-// hangs under the offscreen platform (DESIGN.md, "3D view").
+// hangs under the offscreen platform (docs/architecture.md, "The 3D view").
 #pragma once
 
 #include <QString>

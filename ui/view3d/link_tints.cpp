@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Link tints and the mouse-pull spring (link_tints.h).
 #include "link_tints.h"
 

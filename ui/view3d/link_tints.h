@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What colour each link gets beyond its material: amber near a joint limit, red on a collision or
 // when the external torque exceeds the joint's collision threshold; and the mouse-pull spring force.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loads link meshes with assimp into MeshData (mesh_data.h).
 #include "mesh_data.h"
 

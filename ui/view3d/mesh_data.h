@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Link meshes for the 3D view: an STL (or any format assimp reads) loaded into indexed triangles
 // with smooth normals, scaled to metres, plus a cache so each file is read once per view.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Orbit camera maths (orbit_camera.h).
 #include "orbit_camera.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3D view's camera as an orbit around a target point, z up: rotate, pan, zoom, framing, and
 // the pointer ray for picking. Plain maths, no Qt3D, so it is testable on its own.
 #pragma once

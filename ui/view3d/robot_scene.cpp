@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The robot view's Qt3D scene (robot_scene.h).
 #include "robot_scene.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3D scene of the robot view, independent of any window: ground grid, lights, the arm (one
 // entity + transform per link), TCP frame, safety box, waypoints, planned path and the mouse-pull
 // spring. RobotView puts it in a Qt3D window; tests build it bare to check poses.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3D robot view widget: placeholder or Qt3D window, setters, camera framing and capture
 // (robot_view.h); pointer handling is in robot_view_input.cpp.
 #include "robot_view.h"
@@ -66,8 +67,8 @@ void RobotView::buildPlaceholder(const QString& reason) {
 }
 
 void RobotView::build3D() {
-  // Qt3D's OpenGL renderer, as the render tests use (DESIGN.md): Qt 6.4's RHI renderer returns
-  // QRenderCapture images upside down and draws lines with a different gamma.
+  // Qt3D's OpenGL renderer, as the render tests use (docs/architecture.md, "The 3D view"): Qt 6.4's
+  // RHI renderer returns QRenderCapture images upside down and draws lines with a different gamma.
   if (qEnvironmentVariableIsEmpty("QT3D_RENDERER")) qputenv("QT3D_RENDERER", "opengl");
   window_ = new Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::OpenGL);
   window_->defaultFrameGraph()->setClearColor(kBackground);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // RobotView: the 3D robot view widget. Usable on its own through plain setters (the Program panel
 // calls setWaypoints / setPlannedPath); createRobotView (parts.h) wires one to a Session. Without
 // OpenGL (e.g. the offscreen platform) it shows a placeholder saying why, and the setters do nothing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3D robot view's pointer handling (robot_view.h): orbit, pan, zoom and reset on the Qt3D
 // window, and the mouse pull (Shift + left-drag from the TCP) with its spring force.
 #include <QLineF>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Qt3D building blocks of the 3D view (scene_nodes.h).
 #include "scene_nodes.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small Qt3D building blocks of the 3D view: a triangle mesh from MeshData, coloured line sets
 // (grid, box edges, path, spring) that can be replaced at run time, and lit solid parts.
 #pragma once

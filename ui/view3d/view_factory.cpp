@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The window's entry points to the 3D view (parts.h): createRobotView wires a RobotView to a
 // Session (state on tick(), safety box on operatorSettingsChanged(), waypoints and planned path on
 // programOverlayChanged(), mouse pull to the simulator);
@@ -16,7 +17,7 @@
 namespace rci::ui {
 namespace {
 
-constexpr int kCollisionBit = 15;  // SPEC.md §7 kCollision
+constexpr int kCollisionBit = 15;  // kCollision (docs/error_bits.md)
 
 void showSafetyBox(RobotView& view, const SafetyBox& box) {
   QMatrix4x4 frame;

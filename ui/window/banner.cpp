@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The message strip above the 3D view (banner.h).
 #include "window/banner.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Banner: a non-modal message strip above the 3D view (connection failures, refused input), with
 // a close button. Never blocks the window like a modal dialog would.
 #pragma once

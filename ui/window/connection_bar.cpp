@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The connection toolbar (connection_bar.h).
 #include "window/connection_bar.h"
 

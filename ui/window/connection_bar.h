@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ConnectionBar: the toolbar that chooses the target (built-in simulator with its model, or a robot
 // at HOST:PORT with a recent list) and connects / disconnects.
 #pragma once

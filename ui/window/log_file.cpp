@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The event log file (log_file.h): a writer thread appends queued lines and rotates the file.
 #include "window/log_file.h"
 

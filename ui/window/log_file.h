@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LogFile: the event log on disk -- lines appended to <folder>/rci-studio.log by a background
 // thread (the GUI never waits on the disk), rotated at about 1 MB with a few old files kept
 // (rci-studio.log.1 is the newest of them).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The main window's assembly, connection flow and layout persistence (main_window.h).
 #include "window/main_window.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MainWindow: "RCI Studio" -- the 3D view in the centre, live plots and messages at the bottom,
 // the panels in tabbed docks, the connection toolbar, the status bar. Opens within the screen's
 // available area and persists its geometry per screen size, its dock layout and last target

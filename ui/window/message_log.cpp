@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Messages dock: the event log's rows, coalescing, severity filter, copy, and the log file
 // (message_log.h).
 #include "window/message_log.h"

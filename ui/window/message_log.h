@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MessageLog: the Messages dock, the window's event log -- connects, commands sent and their
 // results, motions and program runs, robot mode, motors, hand guiding, stops and error bits, in
 // operator words, each with a time stamp (hh:mm:ss.zzz) and a severity (coloured). Repeats within a

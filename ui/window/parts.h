@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pieces the main window is assembled from. Each area of ui/ implements its own factory here,
 // so the window (ui/window) depends on these declarations only, not on the areas' classes.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Live-state changes as log events (robot_events.h).
 #include "window/robot_events.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // RobotEventWatcher: turns changes of the live state into events for the event log -- robot mode,
 // motor power, hand guiding, safety stops, error bits, joints beyond their limits and the TCP
 // outside the safety box -- in operator words. It compares each tick's Session::live() with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The status bar fields (status_strip.h).
 #include "window/status_strip.h"
 

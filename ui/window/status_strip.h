@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StatusStrip: the status bar fields -- target, robot mode, motor power, real-time thread, loop
 // rate, period jitter p99, command success rate, active error bits (in red).
 #pragma once

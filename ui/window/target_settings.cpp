@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Target persistence and parsing for the connection bar (target_settings.h).
 #include "window/target_settings.h"
 

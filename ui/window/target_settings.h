@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the window connects: parsing "HOST:PORT", the recent robots and the last target (QSettings),
 // and the robot address from an xmate.ini in the working directory.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scroll-wheel guard (wheel_guard.h): focus policy of the guarded widgets, and wheel events
 // over an unfocused one handed to the enclosing scroll areas.
 #include "window/wheel_guard.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scroll-wheel guard: the wheel scrolls the panel under the pointer instead of changing a spin
 // box, slider or combo box the user has not clicked into (once it has the focus, the wheel works on it).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Whole-window screenshots (window_capture.h).
 #include "window/window_capture.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Renders the whole main window to an image, with the 3D view's own capture painted over its
 // place (QWidget::grab() does not capture Qt3D).
 #pragma once

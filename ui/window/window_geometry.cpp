@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The main window's placement and default dock sizes (window_geometry.h).
 #include "window/window_geometry.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where and how large the main window opens on a screen, and the default sizes of its docks for a
 // window size: plain functions of sizes, so the rules can be read (and tested) in one place.
 #pragma once

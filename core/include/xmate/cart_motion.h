@@ -1,4 +1,5 @@
-// Jerk-limited S-curve of a scalar path coordinate s from rest to rest (API.md). MOVEL and MOVEC
+// SPDX-License-Identifier: Apache-2.0
+// Jerk-limited S-curve of a scalar path coordinate s from rest to rest (docs/api.md). MOVEL and MOVEC
 // map s onto a straight line or an arc. Limits: the Cartesian translation limits of
 // docs/planning.md (velocity, acceleration, jerk) times speed_ratio, s in metres.
 #pragma once

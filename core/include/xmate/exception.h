@@ -1,4 +1,5 @@
-// Exceptions thrown by the RCI client library (API.md, "Exceptions"; SPEC.md §7).
+// SPDX-License-Identifier: Apache-2.0
+// Exceptions thrown by the RCI client library (docs/api.md, "Exceptions").
 // Every one is an xmate::XmateException, itself a std::runtime_error with a readable message.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // INIParser: reads the user's xmate.ini ([network] ip=... port=...) as the vendor examples do.
 #pragma once
 

@@ -1,5 +1,7 @@
-// Jerk-limited joint-space S-curve from rest to rest, all joints arriving together (API.md).
-// Limits are those of SPEC.md §5 (velocity, acceleration, jerk) times speed_ratio.
+// SPDX-License-Identifier: Apache-2.0
+// Jerk-limited joint-space S-curve from rest to rest, all joints arriving together (docs/api.md,
+// "JointMotionGenerator and CartMotionGenerator"). Limits are the model's joint velocity, acceleration
+// and jerk limits (docs/robot_models.md, "Limits") times speed_ratio.
 #pragma once
 
 #include <array>

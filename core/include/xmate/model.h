@@ -1,4 +1,5 @@
-// Kinematics and dynamics of an xMate arm (API.md, "Moves, planners, model"; SPEC.md §4).
+// SPDX-License-Identifier: Apache-2.0
+// Kinematics and dynamics of an xMate arm (docs/api.md, "XmateModel"; docs/kinematics.md).
 // The model is built at run time from the robot's URDF (resources/robots/) with urdfdom.
 // Poses are 4x4 homogeneous matrices in row-major order, metres and radians.
 #pragma once
@@ -77,7 +78,7 @@ class XmateModel {
   double GetPsi(const std::array<double, 7>& q);
   // Joint-space mass matrix M(q), 7x7 row-major (unused rows/columns zero on 6-axis models).
   std::array<double, 49> MassMatrix(const std::array<double, 7>& q);
-  // Soft joint limits used by GetJointPos, in degrees (default: the hardware limits of SPEC.md §5).
+  // Soft joint limits used by GetJointPos, in degrees (default: the hardware limits, docs/robot_models.md).
   void SetJointLimit(const std::array<double, 7>& upper_deg, const std::array<double, 7>& lower_deg);
   // Time step over which GetJointPos checks the rated joint speed (codes -4/-5): q_init is taken as
   // the position one step earlier. Default 0.001 s (one RCI cycle); 0 turns the check off.

@@ -1,4 +1,5 @@
-// Blocking point-to-point moves built on Robot::Control (API.md, "Moves"): MOVEJ in joint space,
+// SPDX-License-Identifier: Apache-2.0
+// Blocking point-to-point moves built on Robot::Control (docs/api.md, "MOVEJ, MOVEL, MOVEC"): MOVEJ in joint space,
 // MOVEL on a straight line, MOVEC on a circular arc, all with jerk-limited timing.
 #pragma once
 

@@ -1,5 +1,6 @@
-// The data exchanged with the controller every millisecond (SPEC.md §3, RCI_WIRE.md) and the
-// callback command types of the vendor API (API.md, "Types"). Plain structs, no behaviour.
+// SPDX-License-Identifier: Apache-2.0
+// The data exchanged with the controller every millisecond (docs/protocol.md, "Real-time datagrams")
+// and the callback command types of the vendor API (docs/api.md, "Types"). Plain structs, no behaviour.
 #pragma once
 
 #include <array>
@@ -9,7 +10,7 @@
 namespace RCI {
 namespace robot {
 
-// Modes reported in RobotState (wire values in RCI_WIRE.md, "Real-time datagrams").
+// Modes reported in RobotState (wire values in docs/protocol.md, "Real-time datagrams").
 enum class MotionGeneratorMode : uint8_t {
   kIdle, kJointPosition, kJointVelocity, kCartesianPosition, kCartesianVelocity
 };
@@ -58,7 +59,7 @@ struct RobotState {
   std::array<double, 7> theta_vel_m{};
   std::array<double, 7> motor_tau{};
   std::array<double, 7> motor_tau_filtered{};
-  std::array<bool, 20> errors{};            // error bits, SPEC.md §7
+  std::array<bool, 20> errors{};            // error bits, docs/error_bits.md
   double control_command_success_rate = 0;  // share of the last 100 commands that arrived
   MotionGeneratorMode motion_generator_mode = MotionGeneratorMode::kIdle;
   ControllerMode controller_mode = ControllerMode::kJointPosition;

@@ -1,4 +1,5 @@
-// xmate::Robot: the client side of RCI (API.md, "xmate::Robot"). TCP commands run on the
+// SPDX-License-Identifier: Apache-2.0
+// xmate::Robot: the client side of RCI (docs/api.md, "xmate::Robot"). TCP commands run on the
 // caller's thread; the 1 kHz UDP exchange runs on a dedicated real-time thread per robot.
 #pragma once
 
@@ -43,7 +44,7 @@ class Robot {
   // Waits for the next state from the controller (UdpException after 1 s without one).
   RCI::robot::RobotState receiveRobotState();
 
-  // ---- Settings (ranges in SPEC.md §2; violations throw std::invalid_argument) --------------
+  // ---- Settings (ranges in docs/api.md; violations throw std::invalid_argument) ------------
   void setCollisionBehavior(const std::array<double, 7>& upper_torque_thresholds_nominal);
   void setCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame,
                          bool active = true);

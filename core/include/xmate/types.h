@@ -1,4 +1,5 @@
-// The robot models RCI Studio knows, as the vendor API names them (API.md, "Types").
+// SPDX-License-Identifier: Apache-2.0
+// The robot models RCI Studio knows, as the vendor API names them (docs/api.md, "Types"; docs/robot_models.md).
 #pragma once
 
 namespace xmate {

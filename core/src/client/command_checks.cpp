@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The per-cycle validity checks of callback commands and their messages.
 #include "client/command_checks.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks of what a control callback returned, run by the real-time thread before the command is
 // sent: every value finite, Cartesian poses homogeneous. Allocation-free; the message for the
 // exception is written afterwards on the caller's thread (describeCommandFault).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // client::Connection on the caller's side: opening and closing the session (TCP, UDP, the
 // real-time thread, the Connect handshake), TCP requests, waiting for states, and Control() runs.
 #include "client/connection.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // client::Connection: one session with one robot controller (docs/client.md, docs/protocol.md).
 // It owns the TCP command channel (tcp_session.h) and the real-time thread that owns the UDP socket
 // and runs the 1 kHz exchange (docs/architecture.md, "Threads and hand-offs"). xmate::Robot is a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `rci-rt` thread of a client::Connection: receive each RobotState, publish it, and during a
 // Control() run call the callback and answer with a RobotCommand. Nothing in the loop allocates,
 // locks or logs (tests/client/test_rt_allocations.cpp counts it).

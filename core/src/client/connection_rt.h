@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real-time side of a client::Connection: the state the `rci-rt` thread owns, the values it
 // publishes, and the Control() run it executes. Shared by connection.cpp (caller's thread) and
 // connection_rt.cpp (the thread). Every field says who writes it and how it is handed over.

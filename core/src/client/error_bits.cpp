@@ -1,5 +1,5 @@
-// Names, meanings and remedies of the controller's error bits (docs/simulator_controller.md,
-// "Command rules and the error bits").
+// SPDX-License-Identifier: Apache-2.0
+// Names, meanings and remedies of the controller's error bits (docs/error_bits.md).
 #include "client/error_bits.h"
 
 namespace xmate::client {
@@ -14,7 +14,7 @@ struct ErrorBitInfo {
 constexpr const char* kRemedies[] = {
     // 0: trajectory rules (bits 0-14, 17, 18)
     "check that the planned trajectory is continuous and differentiable and within the limits of the "
-    "model (docs/simulator_controller.md), filter it if needed (setFilters)",
+    "model (docs/error_bits.md), filter it if needed (setFilters)",
     // 1: collision
     "a collision was detected and the motors were powered off: if there was no contact, raise the thresholds "
     "(setCollisionBehavior) or correct the payload (setLoad); then automaticErrorRecovery() and setMotorPower(1)",

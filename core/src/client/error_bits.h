@@ -1,6 +1,8 @@
-// The 20 error bits of RobotState::errors (docs/simulator_controller.md, "Command rules and the
-// error bits"): their names, what they mean, what to do, and the sentence a ControlException
-// carries when the controller sets some of them; robot mode names.
+// SPDX-License-Identifier: Apache-2.0
+// The 20 error bits of RobotState::errors (docs/error_bits.md; which rule of the simulator sets
+// each: docs/simulator_controller.md, "Command rules and the error bits"): their names, what they
+// mean, what to do, and the sentence a ControlException carries when the controller sets some of
+// them; robot mode names.
 #pragma once
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // INIParser: "[section]" headers, "key = value" lines, comments starting with ';' or '#' (whole
 // lines, or after whitespace at the end of a value), surrounding whitespace and quotes trimmed.
 #include <xmate/ini.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MOVEJ, MOVEL and MOVEC (docs/client.md, "MOVEJ, MOVEL, MOVEC"): plan with the jerk-limited
 // planners of core/src/planning, check the plan (move_check.h), then stream it through
 // Robot::Control. MOVEJ runs in joint position mode; MOVEL/MOVEC run in Cartesian position mode, or

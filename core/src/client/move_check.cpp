@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Start checks and the joint-space sweep of a Cartesian trajectory (move_check.h).
 #include "client/move_check.h"
 

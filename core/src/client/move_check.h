@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What MOVEJ/MOVEL/MOVEC check before they move: that the caller's start matches where the robot
 // is, and that a Cartesian path can be followed in joint space (every 1 ms sample reachable by IK,
 // joint speeds, accelerations and jerks within the limits) -- slowing the whole move down when it

@@ -1,4 +1,5 @@
-// xmate::Robot: session calls and the TCP settings of API.md. Each call validates its arguments with
+// SPDX-License-Identifier: Apache-2.0
+// xmate::Robot: session calls and the TCP settings of docs/api.md. Each call validates its arguments with
 // model/parameter_checks.h (std::invalid_argument, nothing sent), connects if needed, sends the
 // request and turns the response into a return value or an exception (robot_responses.h).
 // Motion calls (startMove, stopMove, Control) are in robot_control.cpp.

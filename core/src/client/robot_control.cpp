@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xmate::Robot's motion calls: startMove (which arms a Control() run), stopMove, and Control() with
 // the conversion of how the run ended (client::ControlOutcome) into the API's exceptions.
 #include <xmate/robot.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decoding of the controller's status responses into return values and exceptions.
 #include "client/robot_responses.h"
 

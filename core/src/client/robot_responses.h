@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading the controller's TCP responses for xmate::Robot: the one-byte status/value responses,
 // their refusal texts, and the exceptions they turn into (CommandException for a refusal,
 // ProtocolException for anything this library does not understand).

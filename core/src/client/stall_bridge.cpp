@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StallBridge (stall_bridge.h): the controller's extrapolation over a gap in the commands, and the
 // third-order tracker that brings the command back onto the plan.
 #include "client/stall_bridge.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StallBridge: what a motion commands after a stall of the client's loop. While commands are lost
 // the controller continues its position target along the last commanded velocity and acceleration
 // (docs/simulator_controller.md, "Lost commands"); a plan re-synchronised to the controller's clock

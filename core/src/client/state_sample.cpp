@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // makeStateSample: RobotState -> StateSample, run by the real-time thread every cycle.
 #include "client/state_sample.h"
 

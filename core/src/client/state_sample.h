@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StateSample: the compact copy of one RobotState that the real-time thread pushes into the GUI's
 // SPSC ring every cycle (docs/architecture.md, "Threads and hand-offs"). Plain data, fixed size.
 #pragma once

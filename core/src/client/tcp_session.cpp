@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Request/response over the TCP command channel: framing, sequence matching, timeouts, errors.
 #include "client/tcp_session.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The TCP command channel of one session: frames with increasing sequence numbers, one request at a
 // time, each answered within a timeout (docs/protocol.md, "TCP framing", "Timeouts").
 #pragma once

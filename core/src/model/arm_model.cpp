@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Building an ArmModel from a Chain, and the setters that keep its derived fields consistent.
 #include "model/arm_model.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The arm as kinematics, inverse kinematics and dynamics compute with it: a Chain flattened into
 // fixed-size arrays (joint placements, axes, link inertias) plus the user's tool, payload and limits.
 #pragma once

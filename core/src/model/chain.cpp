@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // DH table -> Chain, and the DH forward kinematics used as an independent reference.
 #include "model/chain.h"
 

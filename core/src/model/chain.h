@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A serial kinematic chain as the model computes with it: fixed joint placements, joint axes,
 // link inertias and the flange. Built from a URDF (urdf_loader.h) or from a DH table (below).
 #pragma once

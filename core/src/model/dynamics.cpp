@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // RNEA and CRBA in link coordinates (Featherstone's algorithms written with 3-vectors). Each link's
 // mass properties are taken about its frame origin, which lies on its joint axis (arm_model.h).
 // Gravity enters as an upward acceleration of the base (a_0 = -g), the usual RNEA trick.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid-body dynamics of an ArmModel without friction: inverse dynamics by recursive Newton-Euler
 // (RNEA), the joint-space mass matrix by the composite-rigid-body algorithm (CRBA), and the split
 // of the torque into inertial, Coriolis/centrifugal and gravity terms.

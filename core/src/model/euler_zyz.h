@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Elementary rotations and the Z-Y-Z Euler decomposition the closed-form IK is built from: the
 // xMate shoulders and wrists are Rz(a) Ry(b) Rz(c) (docs/kinematics.md, "Frames").
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Branch bookkeeping and solution choice shared by the 7-axis and 6-axis closed-form IK.
 #include "model/ik_branches.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The step every closed-form IK here ends with: from the raw branch solutions of one request to
 // the one answer (2*pi equivalents, soft limits, nearest to q_init, rated-speed check).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 6-axis inverse kinematics. With the xMate 3/7 DH tables the flange orientation factors as
 //   R = [Rz(q1) Ry(q2 + q3)] [Rz(q4) Ry(q5) Rz(q6)],
 // the shoulder S sits at (0, 0, d1), and the wrist centre is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Closed-form IK of the 6-axis xMate arms (xMate 3/7): no shoulder offset, upper arm a2, forearm
 // d4, spherical wrist; 8 branches (shoulder, elbow, wrist). docs/kinematics.md, "6-axis".
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 7-axis S-R-S inverse kinematics. With the xMate Pro DH tables the flange orientation factors as
 //   R = [Rz(q1) Ry(q2) Rz(q3)] Ry(q4) [Rz(q5) Ry(q6) Rz(q7)] = Q Ry(q4) W,
 // the shoulder S sits at (0, 0, d1), and the wrist centre is S + Q (d5 sin q4, 0, d3 + d5 cos q4).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Closed-form IK of the 7-axis S-R-S arms (xMate Pro 3/7) parametrised by the arm angle psi,
 // after Shimizu et al. 2008, derived for the xMate DH tables (docs/kinematics.md, "7-axis").
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Entry point of the closed-form IK: input checks, TCP -> flange, the model's solver, the choice.
 #include "model/inverse_kinematics.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Closed-form inverse kinematics of an ArmModel: TCP pose (+ arm angle psi on 7-axis arms) ->
 // joint angles, nearest a given configuration, with the vendor's result codes. The arm angle of
 // a configuration comes from armAngle(). Definitions and branches: docs/kinematics.md.

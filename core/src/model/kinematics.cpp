@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Forward kinematics and geometric Jacobian: one pass down the chain with 3x3 rotations and
 // translations (joint rotations about +z take the fast path of jointRotation()).
 #include "model/kinematics.h"

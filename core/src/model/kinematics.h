@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Forward kinematics (every link frame, flange, TCP) and the geometric Jacobian of an ArmModel.
 // Real-time safe: no allocation, fixed-size Eigen types only.
 #pragma once

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Kinematics, closed-form IK, dynamics and the public XmateModel (docs/kinematics.md).
 target_sources(rci_core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/arm_model.cpp

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The range checks of parameter_checks.h, with messages that say what to change.
 #include "model/parameter_checks.h"
 

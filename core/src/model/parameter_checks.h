@@ -1,4 +1,5 @@
-// What the controller accepts for each setting (SPEC.md §2 ranges, docs/protocol.md choices):
+// SPDX-License-Identifier: Apache-2.0
+// What the controller accepts for each setting (docs/api.md, "Settings and their ranges"; docs/protocol.md choices):
 // one place for the client (which throws std::invalid_argument), the simulator (which answers
 // kInvalidArgument) and the GUI's editors (which explain the refusal).
 // Every check returns "" when the value is acceptable, else a sentence naming the call, the

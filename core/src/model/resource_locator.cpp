@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Search order and error message for the data root (see resource_locator.h).
 #include "model/resource_locator.h"
 

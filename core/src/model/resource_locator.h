@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finds the robot descriptions and meshes: in the source tree while developing, under
 // <prefix>/share/rci once installed, or wherever RCI_DATA_DIR points.
 #pragma once

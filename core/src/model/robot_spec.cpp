@@ -1,5 +1,7 @@
-// Numbers transcribed from the vendor manual (seeds/000_*.txt §2.3.1, §2.4.4, §2.4.5) and the
-// public link-mass estimates of SPEC.md §6. Degrees and millimetres are converted here, once.
+// SPDX-License-Identifier: Apache-2.0
+// Numbers transcribed from the vendor's xCore RCI user manual V2.0 (sections 2.3.1, 2.4.4, 2.4.5) and
+// public link-mass estimates; docs/robot_models.md lists them all. Degrees and millimetres are converted
+// here, once.
 #include "model/robot_spec.h"
 
 #include <cmath>
@@ -64,9 +66,9 @@ const std::array<RobotSpec, 4> kSpecs{{
 }};
 
 // Planner: the manual copy's values (1.0 m/s, 10 m/s^2, 5000 m/s^3; 2.5 rad/s, 10 rad/s^2,
-// 5000 rad/s^3); arm angle 180 deg/s, 10 rad/s^2, 5000 rad/s^3 (RCI_WIRE.md).
+// 5000 rad/s^3); arm angle 180 deg/s, 10 rad/s^2, 5000 rad/s^3 (docs/robot_models.md, "Cartesian limits").
 constexpr CartesianLimits kPlannerCartesian{1.0, 10.0, 5000.0, 2.5, 10.0, 5000.0, kPi, 10.0, 5000.0};
-// Controller: the vendor rate limiter's constants (RCI_WIRE.md).
+// Controller: the vendor rate limiter's constants (docs/robot_models.md, "Cartesian limits").
 constexpr CartesianLimits kControllerCartesian{1.5, 10.0, 5000.0, 2.5, 25.0, 12500.0, kPi, 10.0, 5000.0};
 
 constexpr std::array<XmateType, 4> kAllTypes{XMATE3_PRO, XMATE7_PRO, XMATE3, XMATE7};

@@ -1,4 +1,5 @@
-// The published facts about each xMate model (SPEC.md §5, §6, §2), in SI units, in one place.
+// SPDX-License-Identifier: Apache-2.0
+// The published facts about each xMate model (docs/robot_models.md), in SI units, in one place.
 // Everything else -- the URDF generator, the model, the planners, the simulator, the GUI's
 // editors -- reads limits and geometry from here.
 #pragma once
@@ -34,7 +35,8 @@ struct RobotSpec {
   std::array<double, 7> dtau_max;      // Nm/s
   std::array<double, 7> collision_threshold_max;  // Nm, setCollisionBehavior upper bound
   std::array<double, 7> joint_stiffness_max;      // Nm/rad, setJointImpedance upper bound
-  // Link masses in kg, ESTIMATES from public robot descriptions (SPEC.md §6): base, link 1..dof.
+  // Link masses in kg, ESTIMATES from public robot descriptions (docs/robot_models.md, "Link
+  // masses"): base, link 1..dof.
   // A base mass of 0 means "not published"; the generator then derives one from the base geometry.
   std::array<double, 8> link_mass;
 };
@@ -48,8 +50,8 @@ struct CartesianLimits {
 
 // Limits the planners stay within (the published manual values).
 const CartesianLimits& plannerCartesianLimits();
-// Limits the controller (and our simulator) enforces: the vendor rate-limiter constants of
-// RCI_WIRE.md, at or above the planner's so a correct plan never trips them.
+// Limits the controller (and our simulator) enforces: the vendor rate limiter's constants
+// (docs/robot_models.md, "Cartesian limits"), at or above the planner's so a correct plan never trips them.
 const CartesianLimits& controllerCartesianLimits();
 
 // Cartesian stiffness upper bounds of setCartesianImpedance: 3000 N/m x3, 300 Nm/rad x3.

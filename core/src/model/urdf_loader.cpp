@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // URDF -> Chain with urdfdom (see urdf_loader.h): checks the file is one serial chain of 6 or 7
 // revolute joints ending in a fixed joint to "flange", and converts urdfdom's poses, limits,
 // inertials and meshes into Eigen types with absolute mesh paths.

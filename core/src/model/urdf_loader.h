@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads a robot description (URDF) with urdfdom into a Chain: the serial chain from the base
 // link through the revolute joints to the flange, with inertias and visual meshes.
 #pragma once

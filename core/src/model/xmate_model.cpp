@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xmate::XmateModel (xmate/model.h): the vendor-compatible model API as std::array conversions
 // around the internal ArmModel (kinematics.h, inverse_kinematics.h, dynamics.h). The arm is loaded
 // from the model's URDF with urdfdom when the XmateModel is constructed.

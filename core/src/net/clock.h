@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monotonic time in nanoseconds and absolute sleeps: the time base of both 1 kHz loops.
 #pragma once
 

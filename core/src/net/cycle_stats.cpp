@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Histogram bookkeeping and percentile read-out for CycleStats.
 #include "net/cycle_stats.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Timing statistics of a periodic loop: period min/mean/max and percentiles from a 1 us histogram,
 // late cycles and lost cycles. record() is allocation-free and O(1) (real-time safe); summary()
 // is for readers (copy the object or call it on the owning thread).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Linux specifics behind realtime.h: pthread scheduling, mlock/mlockall, /proc and /sys reads.
 #include "net/realtime.h"
 

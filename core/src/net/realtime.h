@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Real-time setup of the calling thread (SCHED_FIFO, its stack and the memory its loop touches
 // locked in RAM), the process-wide mlockall for headless tools, and facts about the machine's
 // real-time fitness. Never fails silently: the result says what was granted and why not.

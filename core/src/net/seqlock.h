@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Latest-value publication without locks: one writer (the real-time thread) stores a value every
 // cycle and never waits; readers copy the newest complete value, retrying if a write overlapped.
 #pragma once

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: Apache-2.0
 // Single-producer/single-consumer ring of fixed capacity: the lock-free hand-off from a real-time
-// thread to a reader (DESIGN.md, "Threads"). push() never blocks or allocates; when the ring is
-// full the newest sample is dropped and counted, so the producer's timing never depends on the reader.
+// thread to a reader (docs/architecture.md, "Threads and hand-offs"). push() never blocks or
+// allocates; when the ring is full the newest sample is dropped and counted, so the producer's
+// timing never depends on the reader.
 #pragma once
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // POSIX implementation of TcpConnection/TcpListener: non-blocking descriptors driven by poll().
 #include "net/tcp_socket.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IPv4 TCP connections and a listener with explicit timeouts, for the RCI command channel
 // (client side: one session per robot; simulator side: the controller's port).
 #pragma once

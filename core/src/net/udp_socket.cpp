@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // POSIX implementation of UdpSocket: poll() for the timeout, MSG_TRUNC to detect oversize datagrams.
 #include "net/udp_socket.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A non-copyable IPv4 UDP socket for the 1 kHz exchange. send/receive are single system calls and
 // allocate nothing; errors other than timeouts are reported as return values, not exceptions,
 // so the real-time loop decides what to do.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CartMotionGenerator (xmate/cart_motion.h): one double-S profile of the path coordinate s, within
 // the planner's Cartesian translation limits (model::plannerCartesianLimits(), docs/planning.md)
 // times speed_ratio.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Line and arc geometry of cartesian_path.h (docs/planning.md, "Cartesian paths").
 #include "planning/cartesian_path.h"
 

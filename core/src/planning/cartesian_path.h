@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Geometry of the Cartesian paths of MOVEL (straight line) and MOVEC (circular arc from the start
 // through a via point to the target): TCP position, orientation and arm angle psi as functions of
 // one normalised path parameter u in [0, 1]. Timing is cartesian_trajectory.h's job.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pose checks and conversions of cartesian_pose.h.
 #include "planning/cartesian_pose.h"
 

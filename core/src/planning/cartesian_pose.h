@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Poses as the Cartesian planners take them: checks that a 4x4 matrix is a proper rigid transform,
 // and conversions between Eigen::Isometry3d and the row-major std::array<double, 16> of the RCI API.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Timing and sampling of cartesian_trajectory.h. Why the arc needs its own translation limits is
 // explained in docs/planning.md ("Timing a Cartesian path").
 #include "planning/cartesian_trajectory.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Timing of a Cartesian path (cartesian_path.h): one normalised double-S profile u: 0 -> 1 for the
 // whole move, slowed so that the TCP's translation and rotation and the arm angle all stay within
 // the Cartesian limits times speed_ratio; and sampling of pose, psi and their rates at a time t.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The closed-form double-S planner of double_s.h. Notation follows Biagiotti & Melchiorri sec. 3.4:
 // Tj (constant-jerk phase), Ta (acceleration phase), Tv (cruise), vlim, alim. With v0 = v1 = 0 the
 // profile is symmetric (Td = Ta), so only the acceleration phase is written out; the deceleration

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rest-to-rest jerk-limited "double S" profile of one scalar coordinate: closed-form planning and
 // sampling (Biagiotti & Melchiorri, "Trajectory Planning for Automatic Machines and Robots",
 // sec. 3.4, with v0 = v1 = a0 = a1 = 0). Every planner of this folder is built on it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JointMotionGenerator (xmate/joint_motion.h): every joint follows q_i(t) = q_start_i + delta_i s(t)
 // with one normalised double-S profile s: 0 -> 1, so all joints move on a straight line in joint
 // space, start and stop together, and none exceeds its own limits (docs/planning.md).

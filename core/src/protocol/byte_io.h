@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bounds-checked cursors over byte buffers in the RCI encoding: big-endian integers where the
 // wire says so, little-endian IEEE-754 doubles, one-byte bools. Allocation-free.
 #pragma once

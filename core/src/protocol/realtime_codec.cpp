@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Field order of RobotState and RobotCommand on the wire; see realtime_codec.h.
 #include "protocol/realtime_codec.h"
 

@@ -1,4 +1,5 @@
-// The two UDP datagrams of the 1 kHz exchange (RCI_WIRE.md, "Real-time datagrams"):
+// SPDX-License-Identifier: Apache-2.0
+// The two UDP datagrams of the 1 kHz exchange (docs/protocol.md, "Real-time datagrams"):
 // RobotState (controller -> client, 1247 bytes) and RobotCommand (client -> controller, 290 bytes;
 // the older 258-byte form without dynamic_wall is accepted on receive). Allocation-free.
 #pragma once

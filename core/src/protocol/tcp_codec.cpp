@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Field order of every TCP message, written once (fields()) and used for both directions.
 #include "protocol/tcp_codec.h"
 

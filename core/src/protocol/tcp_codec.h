@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The TCP command channel (docs/protocol.md, "Encoding", "Command codes and payloads"): framing
 // (uint16 length + uint32 sequence, big-endian) and every request and response payload.
 // A payload always begins with the big-endian uint32 Command code.

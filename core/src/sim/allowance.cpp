@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Joint and safety-box allowances (allowance.h).
 #include "sim/allowance.h"
 

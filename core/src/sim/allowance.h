@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Limit allowances: the joint limits and safety-box faces the simulated controller actually enforces.
 // Inside the limits they are the limits; a joint (or the TCP) that starts a motion, hand guiding or
 // power-on beyond them is allowed where it is, and the allowance narrows back as it returns, so

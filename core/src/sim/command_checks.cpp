@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Limit checks on streamed commands (command_checks.h).
 #include "sim/command_checks.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The command rules (docs/simulator_controller.md, "Command rules and the error bits") applied to
 // the commands a client streams: joint position, velocity, acceleration and jerk; Cartesian
 // velocity, acceleration and jerk; arm angle rate; torque range and rate. Each check adds the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim::Controller: construction, the public calls forwarded to Impl, the scene (external wrench,
 // e-stop, guard stop, digital inputs, actual payload) and the status snapshot.
 #include "sim/controller.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated robot controller's logic and physics, without any I/O: it answers TCP requests,
 // advances one 1 ms cycle at a time, and reports the RobotState to send. Single-threaded: the
 // server (sim/server.h) serialises every call. Tests drive it directly; rci-sim, the GUI and the

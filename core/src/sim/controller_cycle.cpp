@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One 1 ms cycle of the simulated controller: take the client's command, advance the servo
 // reference, run the servo and integrate the arm in sub-steps, estimate the external torque, and
 // supervise (collision, safety box, measured-motion limits). Allocation-free.

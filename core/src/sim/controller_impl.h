@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The inside of sim::Controller: its state as plain structs, and the member functions that
 // controller.cpp (construction, scene, status), controller_requests.cpp (TCP commands),
 // controller_motion.cpp (StartMove, streamed commands, stops), controller_cycle.cpp (servo and

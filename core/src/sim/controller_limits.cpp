@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Limits of the simulated controller that must always leave a way back: the joint and safety-box
 // allowances (reset when a motion, hand guiding or power-on starts, narrowed every cycle as the arm
 // returns), the IK's search range during Cartesian motions, and the walls of hand guiding with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Motions of the simulated controller: StartMove and its refusals, the streamed commands of each
 // cycle (the command rules with their error bits, lost-command handling, instability), the end of
 // a motion, and the stops every error, e-stop, guard stop and power-off lead to.

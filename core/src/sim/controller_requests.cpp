@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The TCP command channel of the simulated controller: every request is decoded
 // (protocol/tcp_codec.h), its values re-checked with the client's ranges
 // (model/parameter_checks.h -> kInvalidArgument), refused when it makes no sense in the current

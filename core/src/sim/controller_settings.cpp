@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Default settings of a freshly booted simulated controller (see controller_settings.h).
 #include "sim/controller_settings.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Everything the TCP commands configure on the simulated controller (setCollisionBehavior,
 // setJointImpedance, setFilters, ...), as one plain struct with the defaults a freshly booted
 // controller has. Defaults and their reasons: docs/simulator_controller.md, "Settings".

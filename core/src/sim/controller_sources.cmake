@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The simulated controller's logic and physics (no I/O); included from core/src/sim/CMakeLists.txt.
 # Overview: docs/simulator_controller.md.
 target_sources(rci_core PRIVATE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The RobotState the simulated controller sends: measured values from the last cycle, the
 // commanded values of the current activity (with the Cartesian ones derived by forward kinematics
 // where the command was in joint space), modes and error bits. Allocation-free.

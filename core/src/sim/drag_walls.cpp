@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Spring-damper walls and the hold at the walls while hand guiding (drag_walls.h).
 #include "sim/drag_walls.h"
 

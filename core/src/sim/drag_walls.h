@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Limits feel like walls while hand guiding: a stiff spring with damping over the last few degrees
 // before each joint's allowed limit and the last few centimetres inside each face of the active
 // safety box, added to the drag law; and, when a pull exceeds what the motors can resist, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Names of the error bits (error_bits.h).
 #include "sim/error_bits.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 20 error bits of RobotState::errors (docs/simulator_controller.md) by name, and small helpers to set and test
 // them. The simulated controller sets a bit when it detects the violation; bits stay set until
 // AutomaticErrorRecovery.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // First-order low-pass filter y += alpha (x - y), the filter the simulated controller applies to
 // commands (setFilters) and to measured torques (SetTorqueFilterCutOffFrequency).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rotor inertia, friction, saturation, brakes and the semi-implicit integration of the arm.
 #include "sim/plant.h"
 

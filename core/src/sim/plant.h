@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The physical arm of the simulator: rigid-body dynamics of the model (dynamics.h) plus what the
 // datasheet does not give -- rotor inertia, joint friction, motor torque saturation and the
 // holding brakes -- integrated semi-implicitly. All parameters are ESTIMATES, listed in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small conversions and rotation helpers the simulated controller uses between the wire's
 // std::arrays (row-major 4x4 poses, 7-element joint arrays) and Eigen. Allocation-free.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stop ramp and the auto_limit clamp (reference.h).
 #include "sim/reference.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How the simulated controller turns targets into a smooth joint reference for its servo: the
 // reference track (position at the start and end of each 1 ms cycle, velocity, acceleration), the
 // stop ramp used for every stop (error, guard stop, StopMove, end of a non-position motion), and

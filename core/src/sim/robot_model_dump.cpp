@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fills the LoadRobotModel arrays (layout: docs/simulator_controller.md, "LoadRobotModel").
 #include "sim/robot_model_dump.h"
 

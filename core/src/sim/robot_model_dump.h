@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LoadRobotModel response: what the simulated controller tells a client about its arm (DH
 // table, joint ranges, link inertias, friction, the configured load and tool). The vendor's layout
 // of these arrays is not public; ours is in docs/simulator_controller.md, "LoadRobotModel".

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Collision, safety box and measured-motion checks (safety.h).
 #include "sim/safety.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Supervision of the measured motion: collision from the estimated external joint torques, the
 // Cartesian safety box, and the "actual" error bits 0-6. Margins over the command
 // limits, because a measured motion overshoots a little: see the constants below and

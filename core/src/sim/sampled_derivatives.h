@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Velocity, acceleration and jerk of a signal known only at the instants commands arrived, by
 // divided differences over the (possibly irregular) sample times. A lost packet widens one
 // interval instead of doubling a step, so it does not by itself look like a velocity or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim::Server: start/stop/kill, the job queue that hands work to the cycle thread, the public scene
 // and fault calls, and the published status. The threads themselves live in server_cycle.cpp and
 // server_session.cpp.

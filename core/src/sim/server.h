@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated controller on the network: a sim::Controller wrapped with the RCI sockets (TCP
 // command channel, 1 kHz UDP state stream), a real-time or lock-step clock, reboot, and injectable
 // scene events and packet faults. rci-sim, the GUI and the tests embed it; docs/simulator.md.

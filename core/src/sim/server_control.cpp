@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The control-port line protocol (server_control.h): parsing, the commands, and the TCP thread that
 // serves them.
 #include "sim/server_control.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rci-sim's control port: a line protocol over TCP for scene events and packet faults, one command
 // per line, each answered by one line starting with "ok" or "error" (docs/simulator.md).
 #pragma once

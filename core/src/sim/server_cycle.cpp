@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulator's cycle thread: every cycle it runs the queued requests, sends the controller's
 // state to the client, collects the RobotCommand answering it, and steps the controller by 1 ms.
 // Real-time clock: a cycle per millisecond of wall time (absolute sleeps). Lock-step clock: while

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Packet fault countdowns and state corruption (see server_faults.h).
 #include "sim/server_faults.h"
 

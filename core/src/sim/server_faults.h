@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Packet faults of the simulated controller: countdowns that decide the fate of the next state and
 // command datagrams, and the byte surgery that makes a state undecodable. No I/O: the cycle thread
 // (server_cycle.cpp) asks and acts.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The inside of sim::Server, shared by its three source files: server.cpp (lifecycle, public calls,
 // the job queue), server_cycle.cpp (the 1 kHz cycle thread) and server_session.cpp (the TCP thread).
 // Ownership: everything under "cycle thread only" is touched by the cycle thread alone, or by a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulator's TCP thread: accepts one client session at a time, reads framed requests, has
 // the cycle thread execute them between two cycles, and writes the responses. A connection without
 // Connect in time is closed; a client arriving while the session is held gets a "busy" Connect

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The simulator server (server*): sockets, clocks, reboot, fault injection and the control port
 # around the controller. Included from CMakeLists.txt next to this file.
 target_sources(rci_core PRIVATE

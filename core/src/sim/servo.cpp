@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Control laws of the simulated controller (servo.h).
 #include "sim/servo.h"
 

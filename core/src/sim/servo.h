@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The control laws of the simulated controller, evaluated at the servo rate (every sub-step):
 // joint position (computed torque), joint impedance, Cartesian impedance (also used for hand
 // guiding), and the compensation added in torque mode. Each returns the motor torque; the

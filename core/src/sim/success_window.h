@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // control_command_success_rate: the share of the last 100 expected commands that arrived
 // (docs/protocol.md; libfranka uses the same window). Fixed-size ring, no allocation.
 #pragma once

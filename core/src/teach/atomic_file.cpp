@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // writeFileAtomically / readFile (atomic_file.h), with POSIX calls so the data reach the disk
 // before the rename makes them visible.
 #include "teach/atomic_file.h"

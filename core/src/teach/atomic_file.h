@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Atomic file replacement for everything the user saves from the teach code (programs, reports):
 // write a temporary file in the same folder, fsync it, rename it over the target, fsync the folder.
 #pragma once

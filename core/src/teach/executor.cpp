@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The executor's run loop and controls (executor.h): pre-flight, then one instruction after the
 // other with pauses between them, WAIT / SET_DO / WAIT_DI, failures turned into the report.
 // Motions are in executor_motion.cpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The executor (issue 5): runs a program on the calling thread through the robot's real-time loop
 // with the jerk-limited planners -- MOVEJ in joint position mode (xmate/joint_motion.h), MOVEL and
 // MOVEC in Cartesian position mode (planning/cartesian_trajectory.h, timed within the joint limits

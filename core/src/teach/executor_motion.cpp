@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The executor's motions (executor.h): MOVEJ streams the joint S-curve in joint position mode,
 // MOVEL/MOVEC stream the timed Cartesian path in Cartesian position mode. Both sample their plan at
 // a plan time that advances by k * dt per cycle (TimeScaling), which is how pause, stop and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The strict JSON reader and writer of json.h: a recursive-descent parser that tracks line and
 // column for its errors, and an indenting writer with shortest round-trip numbers.
 #include "teach/json.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A small, strict JSON reader and writer for the teach files (programs, run reports): objects,
 // arrays, numbers, strings with escapes, true/false/null. Parse errors say line:column and what
 // was expected. No Qt, no dependency beyond the standard library.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pre-flight trace (preflight.h): follows the program with an offline model of the robot,
 // sampling every motion in joint space (MOVEJ) or along its Cartesian path with chained IK
 // (MOVEL/MOVEC), and collects every problem by instruction.

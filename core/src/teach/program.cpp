@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Names of instruction types and IO signals (program.h).
 #include "teach/program.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading and writing programs (program_io.h). Reading is strict: every field is checked for kind,
 // length, finiteness and range, unknown members are refused (a typo must not silently vanish).
 #include "teach/program_io.h"

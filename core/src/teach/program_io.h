@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The program file format (docs/teach.md): JSON with "format": "rci-program", "version": 1, the
 // robot model and the instructions. Loading checks everything and names the instruction (number
 // and type) and the field of the first problem; saving is atomic.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Recording helpers (recording.h).
 #include "teach/recording.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Recording helpers for the teach panel: a Target (q + TCP pose + arm angle) from a RobotState,
 // and motion instructions built from taught targets.
 #pragma once

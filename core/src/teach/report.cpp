@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Run report -> JSON (report.h).
 #include "teach/report.h"
 

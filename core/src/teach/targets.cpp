@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Target resolution (targets.h).
 #include "teach/targets.h"
 

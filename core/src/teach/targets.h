@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // From taught targets to what the planners take: joint goals for MOVEJ (q, or IK of the pose near
 // the current joints) and path points / paths for MOVEL and MOVEC (the pose, or FK of q). Shared by
 // the pre-flight trace and the executor so both resolve a target the same way.

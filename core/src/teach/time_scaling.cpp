@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TimeScaling (time_scaling.h): a rate- and rate-change-limited tracker. It brakes along the
 // discrete form of v = sqrt(2 A |e|): with the rate falling by d = A dt per step, a rate n d covers
 // dt d n (n + 1) / 2 before it reaches zero, so the largest rate that can still stop in |e| is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The executor's time scaling: plan time advances k * dt per cycle, k in [0, 1]. k follows its
 // target (0 to pause or stop, the speed override otherwise) with a bounded rate |dk/dt| <= rate and
 // a bounded change of that rate |d2k/dt2| <= rate_change, so the commanded motion stays on its path
