@@ -1,4 +1,4 @@
-// rci-sim's command line: the options, their defaults, and their validation.
+// rci-sim's command line (CLI11): the options, their defaults, and their validation.
 #pragma once
 
 #include <cstdint>
