@@ -1,4 +1,5 @@
-// Command-line options of rci-studio: --model, --robot HOST:PORT, --lockstep, --screenshot FILE.
+// Command-line options of rci-studio (QCommandLineParser): --model, --robot HOST:PORT, --lockstep,
+// --screenshot FILE, -h/--help, -v/--version.
 #pragma once
 
 #include <QString>
