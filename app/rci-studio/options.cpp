@@ -4,6 +4,8 @@
 
 #include <QCommandLineParser>
 
+#include <cstdlib>
+
 #include "window/target_settings.h"
 
 namespace {
@@ -40,6 +42,12 @@ QString studioUsage() {
   return p.parser.helpText().replace(QLatin1String("<executable_name>"), QLatin1String("rci-studio"));
 }
 
+void showStudioHelpAll() {
+  StudioParser p;
+  p.parser.process(QStringList{QStringLiteral("rci-studio"), QStringLiteral("--help-all")});  // prints and exits 0
+  std::exit(0);
+}
+
 bool parseStudioOptions(const QStringList& arguments, StudioOptions& options, QString& error) {
   options.target.kind = rci::ui::SessionTarget::Kind::kSimulator;
   options.target.loopback = true;
@@ -64,7 +72,8 @@ bool parseStudioOptions(const QStringList& arguments, StudioOptions& options, QS
                 .arg(p.parser.positionalArguments().first());
     return false;
   }
-  options.help = p.parser.isSet(p.help) || p.parser.isSet(QStringLiteral("help-all"));
+  options.help = p.parser.isSet(p.help);
+  options.help_all = p.parser.isSet(QStringLiteral("help-all"));
   options.version = p.parser.isSet(p.version);
   // "--screenshot --lockstep": the next option is not a value (Qt would take it as one).
   for (const QCommandLineOption* option : {&p.model, &p.robot, &p.screenshot}) {

@@ -57,6 +57,9 @@ class TestStudioApp : public QObject {
     const Run shortHelp = runStudio({"-h"});
     QCOMPARE(shortHelp.code, 0);
     QCOMPARE(shortHelp.out, run.out);
+    const Run all = runStudio({"--help-all"});
+    QCOMPARE(all.code, 0);
+    QVERIFY2(all.out.contains("--screenshot <FILE>"), qPrintable(all.out));
     const Run version = runStudio({"--version"});
     QCOMPARE(version.code, 0);
     QVERIFY2(version.out.startsWith("rci-studio "), qPrintable(version.out));
