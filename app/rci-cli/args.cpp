@@ -1,56 +1,102 @@
 // SPDX-License-Identifier: Apache-2.0
-// Argument helpers and the usage text of rci-cli.
-#include <cerrno>
-#include <cstdlib>
+// The command-line helpers of rci-cli (cli.h): --robot, --model and whole-number options on CLI11,
+// with validators whose messages say what the option takes and what it got.
+#include <charconv>
+
+#include <CLI/CLI.hpp>
 
 #include "cli.h"
 #include "model/robot_spec.h"
 
 namespace rci_cli {
+namespace {
 
-std::string Args::value(const std::string& name) {
-  if (done()) throw UsageError(name + " needs a value");
-  return take();
+const char* kModels = "xmate3_pro, xmate7_pro, xmate3, xmate7";
+
+// A whole number in [lo, hi], or why not ("" if it is one).
+std::string wholeNumberProblem(const std::string& text, long lo, long hi) {
+  long v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec == std::errc() && end == text.data() + text.size() && v >= lo && v <= hi) return {};
+  return "takes a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" + text + "'";
 }
 
-HostPort parseHostPort(const std::string& option, const std::string& text) {
-  HostPort hp;
+// CLI11 prefixes a validator's message with the option's name: "--cycles: takes ..."; main() joins
+// them into "--cycles takes ...".
+CLI::Validator wholeNumber(long lo, long hi) {
+  return CLI::Validator([lo, hi](std::string& text) { return wholeNumberProblem(text, lo, hi); }, "");
+}
+
+}  // namespace
+
+RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed) {
+  const std::string expected = sim_allowed ? "write sim (the in-process simulator) or HOST:PORT, e.g. 127.0.0.1:1337"
+                                           : "write HOST:PORT, e.g. 127.0.0.1:1337";
+  RobotTarget target;
+  if (text == "sim") {
+    if (!sim_allowed) throw UsageError("'sim': this command needs a controller address; " + expected);
+    target.in_process = true;
+    return target;
+  }
   const auto colon = text.rfind(':');
-  hp.host = text.substr(0, colon);
-  if (hp.host.empty()) throw UsageError(option + " '" + text + "': expected HOST:PORT, e.g. 127.0.0.1:1337");
-  if (colon != std::string::npos) hp.port = uint16_t(parseInteger(option + " port", text.substr(colon + 1), 1, 65535));
-  return hp;
+  target.address.host = text.substr(0, colon);
+  if (target.address.host.empty()) throw UsageError("'" + text + "': no host; " + expected);
+  if (colon != std::string::npos) {
+    const std::string port = text.substr(colon + 1);
+    if (!wholeNumberProblem(port, 1, 65535).empty())
+      throw UsageError("'" + text + "': the port must be a whole number from 1 to 65535, got '" + port + "'; " +
+                       expected);
+    target.address.port = uint16_t(std::stol(port));
+  }
+  return target;
 }
 
-long parseInteger(const std::string& option, const std::string& text, long lo, long hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE || v < lo || v > hi)
-    throw UsageError(option + " '" + text + "': expected an integer in [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "]");
-  return v;
-}
-
-xmate::XmateType parseModel(const std::string& option, const std::string& text) {
+xmate::XmateType parseModel(const std::string& text) {
   if (const auto* spec = xmate::model::findRobotSpec(text)) return spec->type;
-  throw UsageError(option + " '" + text + "': unknown model (known: xmate3_pro, xmate7_pro, xmate3, xmate7)");
+  throw UsageError("unknown model '" + text + "'; choose one of: " + kModels);
 }
 
-std::string usage() {
-  return "usage:\n"
-         "  rci-cli [model NAME]                      limits of a model (default xmate7_pro)\n"
-         "  rci-cli state --robot HOST:PORT [--count N] [--model NAME]\n"
-         "                                            live readout of the robot's state (N refreshes; default: until Ctrl-C)\n"
-         "  rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report REPORT.json] [--fast]\n"
-         "                                            run a taught program (docs/teach.md): pre-flight, then replay;\n"
-         "                                            sim = in-process simulator on its real-time clock (--fast: lock-step,\n"
-         "                                            faster than real time); R = speed override 0.1..1.0\n"
-         "  rci-cli doctor                            real-time fitness of this machine, with advice\n"
-         "  rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep] [--model NAME]\n"
-         "                                            1 kHz joint-position loop: period, jitter, late/lost cycles\n"
-         "  rci-cli bench client [--cycles N]         client cost per cycle (decode, callback, encode, send)\n"
-         "  rci-cli help                              this text\n";
+CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_allowed, const std::string& help) {
+  CLI::Option* option = command.add_option_function<std::string>(
+      "--robot", [&target, sim_allowed](const std::string& text) { target = parseRobotTarget(text, sim_allowed); },
+      help);
+  option->type_name(sim_allowed ? "sim|HOST:PORT" : "HOST:PORT");
+  option->check(CLI::Validator(
+      [sim_allowed](std::string& text) {
+        try {
+          parseRobotTarget(text, sim_allowed);
+          return std::string();
+        } catch (const UsageError& e) {
+          return std::string(e.what());
+        }
+      },
+      ""));
+  return option;
+}
+
+CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std::string& help) {
+  CLI::Option* option = command.add_option_function<std::string>(
+      "--model", [&type](const std::string& text) { type = parseModel(text); }, help);
+  option->type_name("NAME");
+  option->check(CLI::Validator(
+      [](std::string& text) {
+        try {
+          parseModel(text);
+          return std::string();
+        } catch (const UsageError& e) {
+          return std::string(e.what());
+        }
+      },
+      ""));
+  return option;
+}
+
+CLI::Option* addWholeNumberOption(CLI::App& command, const std::string& name, long& value, long lo, long hi,
+                                  const std::string& help) {
+  CLI::Option* option =
+      command.add_option(name, value, help + "; " + std::to_string(lo) + " to " + std::to_string(hi));
+  option->type_name("N")->check(wholeNumber(lo, hi));
+  return option;
 }
 
 }  // namespace rci_cli

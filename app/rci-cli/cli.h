@@ -1,54 +1,83 @@
 // SPDX-License-Identifier: Apache-2.0
-// rci-cli's commands and the small argument helpers they share. Each command returns the process
-// exit code: 0 success, 1 failure at run time, 2 bad arguments (UsageError).
+// rci-cli's commands, their options, and the command-line helpers they share (CLI11, args.cpp).
+// Each command returns the process exit code: 0 success, 1 failure at run time, 2 bad arguments
+// (CLI11's parse errors and UsageError).
 #pragma once
 
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include <xmate/types.h>
 
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
 namespace rci_cli {
 
-// Bad command-line arguments: main() prints the message and the usage text, and exits with 2.
+// Bad command-line arguments found after parsing: main() prints the message and the command's
+// usage, and exits with 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
-};
-
-// The arguments after the command words, consumed left to right.
-class Args {
- public:
-  explicit Args(std::vector<std::string> items) : items_(std::move(items)) {}
-  bool done() const { return next_ >= items_.size(); }
-  std::string take() { return items_[next_++]; }
-  // The value after option `name`; UsageError if missing.
-  std::string value(const std::string& name);
-
- private:
-  std::vector<std::string> items_;
-  size_t next_ = 0;
 };
 
 struct HostPort {
   std::string host;
   uint16_t port = 1337;
 };
-// "HOST:PORT" or "HOST" (port 1337); UsageError naming `option` when malformed.
-HostPort parseHostPort(const std::string& option, const std::string& text);
-// An integer in [lo, hi]; UsageError naming `option` otherwise.
-long parseInteger(const std::string& option, const std::string& text, long lo, long hi);
-// "xmate7_pro" -> XMATE7_PRO; UsageError listing the four names otherwise.
-xmate::XmateType parseModel(const std::string& option, const std::string& text);
 
-std::string usage();
+// What --robot names: the in-process simulator ("sim") or a controller at HOST:PORT.
+struct RobotTarget {
+  bool in_process = false;
+  HostPort address;
+};
 
-int runModel(Args args);        // rci-cli [model NAME]
-int runState(Args args);        // rci-cli state --robot HOST:PORT [--count N]
-int runDoctor(Args args);       // rci-cli doctor
-int runBenchLoop(Args args);    // rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep]
-int runBenchClient(Args args);  // rci-cli bench client [--cycles N]
-int runRun(Args args);          // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]
+// The one parser of --robot's value, for every command that takes it: "sim" (when sim_allowed),
+// "HOST:PORT" or "HOST" (port 1337). Throws UsageError saying what was wrong and what to write.
+RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed);
+
+// Options shared by the commands, with their checks (a bad value is a CLI11 ValidationError whose
+// message says what the option takes and what it got):
+//   --robot sim|HOST:PORT (or HOST:PORT alone), parsed by parseRobotTarget into `target`;
+CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_allowed, const std::string& help);
+//   --model NAME, one of the four model names;
+CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std::string& help);
+//   a whole number in [lo, hi].
+CLI::Option* addWholeNumberOption(CLI::App& command, const std::string& name, long& value, long lo, long hi,
+                                  const std::string& help);
+// "'xmate7_pro' -> XMATE7_PRO"; UsageError listing the four names otherwise.
+xmate::XmateType parseModel(const std::string& text);
+
+struct StateOptions {
+  RobotTarget robot;  // never in_process
+  long count = 0;     // 0: until interrupted
+  xmate::XmateType model = xmate::XMATE7_PRO;
+};
+
+struct RunOptions {
+  std::string program_path;
+  RobotTarget robot;
+  bool have_model = false;
+  xmate::XmateType model = xmate::XMATE7_PRO;
+  double speed = 1.0;
+  std::string report_path;
+  bool fast = false;  // in-process simulator on the lock-step clock (faster than real time)
+};
+
+struct LoopOptions {
+  RobotTarget robot{true, {}};
+  long cycles = 10'000;
+  bool lockstep = false;
+  xmate::XmateType type = xmate::XMATE7_PRO;
+};
+
+int runModel(xmate::XmateType type);         // rci-cli [model NAME]
+int runState(const StateOptions& options);   // rci-cli state --robot HOST:PORT [--count N] [--model NAME]
+int runDoctor();                             // rci-cli doctor
+int runBenchLoop(const LoopOptions& options);  // rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep] [--model NAME]
+int runBenchClient(long cycles);             // rci-cli bench client [--cycles N]
+int runRun(const RunOptions& options);       // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]
 
 }  // namespace rci_cli

@@ -37,15 +37,7 @@ void drain(xmate::net::UdpSocket& sink) {
 
 }  // namespace
 
-int runBenchClient(Args args) {
-  long cycles = 100'000;
-  while (!args.done()) {
-    const std::string option = args.take();
-    if (option == "--cycles")
-      cycles = parseInteger(option, args.value(option), 1000, 100'000'000);
-    else
-      throw UsageError("bench client: unknown option '" + option + "'");
-  }
+int runBenchClient(long cycles) {
   using namespace xmate;
   // The "controller": a UDP socket the commands go to, drained between measurements.
   net::UdpSocket sink;

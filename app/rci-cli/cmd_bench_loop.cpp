@@ -23,14 +23,6 @@ namespace {
 using CM = RCI::robot::StartMoveRequest::ControllerMode;
 using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
 
-struct LoopOptions {
-  bool in_process = true;
-  HostPort robot;
-  long cycles = 10'000;
-  bool lockstep = false;
-  xmate::XmateType type = xmate::XMATE7_PRO;
-};
-
 // What the callback records, preallocated before the loop so that it allocates nothing.
 struct Recording {
   std::vector<int64_t> arrival_ns;  // when each state reached the callback
@@ -38,28 +30,6 @@ struct Recording {
   double min_success_rate = 1.0;
   long cycles = 0;
 };
-
-LoopOptions parse(Args& args) {
-  LoopOptions o;
-  while (!args.done()) {
-    const std::string option = args.take();
-    if (option == "--robot") {
-      const std::string v = args.value(option);
-      o.in_process = v == "sim";
-      if (!o.in_process) o.robot = parseHostPort(option, v);
-    } else if (option == "--cycles") {
-      o.cycles = parseInteger(option, args.value(option), 1500, 10'000'000);
-    } else if (option == "--lockstep") {
-      o.lockstep = true;
-    } else if (option == "--model") {
-      o.type = parseModel(option, args.value(option));
-    } else {
-      throw UsageError("bench loop: unknown option '" + option + "'");
-    }
-  }
-  if (o.lockstep && !o.in_process) throw UsageError("--lockstep applies to the in-process simulator (--robot sim)");
-  return o;
-}
 
 std::unique_ptr<xmate::sim::Server> startSimulator(const LoopOptions& o) {
   auto config = xmate::sim::embeddedConfig(
@@ -117,20 +87,21 @@ void printRow(const char* name, const Stats& s) {
 
 }  // namespace
 
-int runBenchLoop(Args args) {
-  const LoopOptions o = parse(args);
+int runBenchLoop(const LoopOptions& o) {
+  if (o.lockstep && !o.robot.in_process)
+    throw UsageError("--lockstep applies to the in-process simulator (--robot sim); leave out --lockstep or --robot");
   std::unique_ptr<xmate::sim::Server> server;
-  if (o.in_process) server = startSimulator(o);
-  const std::string host = o.in_process ? "127.0.0.1" : o.robot.host;
-  const uint16_t port = o.in_process ? server->port() : o.robot.port;
+  if (o.robot.in_process) server = startSimulator(o);
+  const std::string host = o.robot.in_process ? "127.0.0.1" : o.robot.address.host;
+  const uint16_t port = o.robot.in_process ? server->port() : o.robot.address.port;
   xmate::Robot robot(host, port, o.type);
   robot.connect();
   robot.setMotorPower(1);
   xmate::client::Connection& session = robot.connection();
 
   std::printf("rci-cli bench loop: %ld cycles against %s (%s:%u)%s\n", o.cycles,
-              o.in_process ? "the in-process simulator" : "a robot", host.c_str(), port,
-              o.in_process ? (o.lockstep ? ", lock-step clock" : ", real-time clock") : "");
+              o.robot.in_process ? "the in-process simulator" : "a robot", host.c_str(), port,
+              o.robot.in_process ? (o.lockstep ? ", lock-step clock" : ", real-time clock") : "");
   std::printf("  client real-time thread: %s\n", session.realtimeStatus().describe().c_str());
   if (server) std::printf("  simulator cycle thread:  %s\n", server->status().realtime.c_str());
 

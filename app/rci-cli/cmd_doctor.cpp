@@ -127,8 +127,7 @@ void checkCpus() {
 
 }  // namespace
 
-int runDoctor(Args args) {
-  if (!args.done()) throw UsageError("doctor takes no arguments, got '" + args.take() + "'");
+int runDoctor() {
   std::printf("rci-cli doctor: real-time fitness of this machine for the 1 kHz RCI loop\n");
   checkKernel();
   checkScheduling();

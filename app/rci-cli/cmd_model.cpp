@@ -20,10 +20,8 @@ void printModel(const xmate::model::RobotSpec& s) {
 
 }  // namespace
 
-int runModel(Args args) {
-  const std::string name = args.done() ? "xmate7_pro" : args.take();
-  if (!args.done()) throw UsageError("model takes one name, got more: '" + args.take() + "'");
-  printModel(xmate::model::robotSpec(parseModel("model", name)));
+int runModel(xmate::XmateType type) {
+  printModel(xmate::model::robotSpec(type));
   return 0;
 }
 

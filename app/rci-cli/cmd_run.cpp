@@ -28,60 +28,6 @@ using namespace xmate::teach;
 std::atomic<bool> g_interrupted{false};
 extern "C" void onInterrupt(int) { g_interrupted.store(true); }
 
-struct RunOptions {
-  std::string program_path;
-  bool in_process = false;
-  HostPort robot;
-  bool have_robot = false;
-  bool have_model = false;
-  xmate::XmateType model = xmate::XMATE7_PRO;
-  double speed = 1.0;
-  std::string report_path;
-  bool fast = false;  // in-process simulator on the lock-step clock (faster than real time)
-};
-
-double parseRatio(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !(v >= 0.1 && v <= 1.0))
-    throw UsageError(option + " '" + text + "': expected a speed override between 0.1 and 1.0 (e.g. 0.5 = 50 %)");
-  return v;
-}
-
-RunOptions parseRunOptions(Args& args) {
-  RunOptions o;
-  while (!args.done()) {
-    const std::string option = args.take();
-    if (option == "--robot") {
-      const std::string v = args.value(option);
-      o.in_process = v == "sim";
-      if (!o.in_process) o.robot = parseHostPort(option, v);
-      o.have_robot = true;
-    } else if (option == "--model") {
-      o.model = parseModel(option, args.value(option));
-      o.have_model = true;
-    } else if (option == "--speed") {
-      o.speed = parseRatio(option, args.value(option));
-    } else if (option == "--fast") {
-      o.fast = true;
-    } else if (option == "--report") {
-      o.report_path = args.value(option);
-      if (o.report_path.empty()) throw UsageError("--report needs a file name");
-    } else if (!option.empty() && option[0] == '-') {
-      throw UsageError("run: unknown option '" + option + "'");
-    } else if (o.program_path.empty()) {
-      o.program_path = option;
-    } else {
-      throw UsageError("run: more than one program given ('" + o.program_path + "', '" + option + "')");
-    }
-  }
-  if (o.program_path.empty()) throw UsageError("run needs a program file (PROGRAM.json)");
-  if (!o.have_robot) throw UsageError("run needs --robot sim or --robot HOST:PORT");
-  if (o.fast && !o.in_process)
-    throw UsageError("--fast applies to the in-process simulator (--robot sim); a controller keeps its own clock");
-  return o;
-}
-
 // Real-time clock by default: the motions take their real durations, as on a robot. --fast: the
 // lock-step clock, which waits for each answer and otherwise runs as fast as the client answers.
 xmate::sim::ClockMode simulatorClock(const RunOptions& o) {
@@ -134,31 +80,33 @@ double instructionSeconds(const RunReport& report) {
 
 void printFinished(const RunOptions& o, const Program& program, const RunReport& report) {
   std::printf("finished: %zu instructions in %.2f s", program.instructions.size(), report.duration);
-  if (o.in_process && o.fast)
+  if (o.robot.in_process && o.fast)
     std::printf(" (in-process simulator, %s; the instructions' own durations add up to %.2f s)",
                 clockText(simulatorClock(o)), instructionSeconds(report));
-  else if (o.in_process)
+  else if (o.robot.in_process)
     std::printf(" (in-process simulator, %s)", clockText(simulatorClock(o)));
   std::printf("\n");
 }
 
 }  // namespace
 
-int runRun(Args args) {
-  const RunOptions o = parseRunOptions(args);
+int runRun(const RunOptions& o) {
+  if (o.fast && !o.robot.in_process)
+    throw UsageError("--fast applies to the in-process simulator (--robot sim); a controller keeps its own clock: "
+                     "leave out --fast");
   const Program program = loadProgram(o.program_path);
   const xmate::XmateType type = o.have_model ? o.model : program.robot;
   requireRobot(program, type);
 
   std::unique_ptr<xmate::sim::Server> server;
-  HostPort address = o.robot;
-  if (o.in_process) {
+  HostPort address = o.robot.address;
+  if (o.robot.in_process) {
     server = startSimulator(type, simulatorClock(o));
     address = {"127.0.0.1", server->port()};
   }
   xmate::Robot robot(address.host, address.port, type);
   robot.connect();
-  const std::string where = o.in_process ? std::string(" (in-process simulator, ") + clockText(simulatorClock(o)) + ")" : "";
+  const std::string where = o.robot.in_process ? std::string(" (in-process simulator, ") + clockText(simulatorClock(o)) + ")" : "";
   std::printf("running %s (%zu instructions, %s) on %s:%u%s at %.0f %% speed\n", o.program_path.c_str(),
               program.instructions.size(), std::string(xmate::model::robotSpec(type).display_name).c_str(),
               address.host.c_str(), address.port, where.c_str(), o.speed * 100);

@@ -67,26 +67,10 @@ int printState(const HostPort& robot, const RCI::robot::RobotState& s, int dof, 
 
 }  // namespace
 
-int runState(Args args) {
-  HostPort robot_address;
-  bool have_robot = false;
-  long count = 0;  // 0: until interrupted
-  xmate::XmateType type = xmate::XMATE7_PRO;
-  while (!args.done()) {
-    const std::string option = args.take();
-    if (option == "--robot") {
-      robot_address = parseHostPort(option, args.value(option));
-      have_robot = true;
-    } else if (option == "--count") {
-      count = parseInteger(option, args.value(option), 1, 100'000'000);
-    } else if (option == "--model") {
-      type = parseModel(option, args.value(option));
-    } else {
-      throw UsageError("state: unknown option '" + option + "'");
-    }
-  }
-  if (!have_robot) throw UsageError("state needs --robot HOST:PORT");
-
+int runState(const StateOptions& options) {
+  const HostPort& robot_address = options.robot.address;
+  const long count = options.count;
+  const xmate::XmateType type = options.model;
   xmate::Robot robot(robot_address.host, robot_address.port, type);
   robot.connect();
   const int dof = type == xmate::XMATE3 || type == xmate::XMATE7 ? 6 : 7;

@@ -2,39 +2,198 @@
 // rci-cli: headless tools for xMate robots (docs/client.md). Without arguments it describes the
 // default model; subcommands read a robot's state live, check the machine's real-time setup, and
 // benchmark the 1 kHz loop and the client's cost per cycle, and run taught programs headless.
+// The command line is CLI11's: a subcommand per tool, each with its generated --help.
 #include <cstdio>
-#include <cstring>
 #include <string>
-#include <vector>
 
+#include <CLI/CLI.hpp>
 #include <xmate/exception.h>
 
 #include "cli.h"
 
+namespace {
+
+using namespace rci_cli;
+
+// The deepest subcommand the parser got to (the one whose usage to show with an error).
+const CLI::App* selectedCommand(const CLI::App& app) {
+  const CLI::App* at = &app;
+  for (;;) {
+    const auto chosen = at->get_subcommands();
+    if (chosen.empty()) return at;
+    at = chosen.front();
+  }
+}
+
+std::string commandPath(const CLI::App* command) {
+  std::string path;
+  for (const CLI::App* c = command; c != nullptr; c = c->get_parent())
+    path = c->get_name() + (path.empty() ? "" : " " + path);
+  return path;
+}
+
+// "The following argument(s) was/were not expected: a b" -> the arguments.
+std::vector<std::string> unexpectedArguments(const std::string& what) {
+  std::vector<std::string> words;
+  const auto colon = what.find(": ");
+  std::string rest = colon == std::string::npos ? what : what.substr(colon + 2);
+  for (size_t start = 0; start < rest.size();) {
+    const auto space = rest.find(' ', start);
+    words.push_back(rest.substr(start, space - start));
+    if (space == std::string::npos) break;
+    start = space + 1;
+  }
+  return words;
+}
+
+// CLI11's parse error as one line that says what was wrong (the usage that follows says what to do).
+std::string explain(const CLI::ParseError& e, const CLI::App& app, const CLI::App* command) {
+  const std::string what = e.what();
+  const std::string name = command == &app ? "" : commandPath(command).substr(app.get_name().size() + 1);
+  if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
+    const std::string first = unexpectedArguments(what).front();
+    if (!first.empty() && first[0] == '-')
+      return (name.empty() ? "" : name + ": ") + "unknown option '" + first + "'";
+    if (command == &app) return "unknown command '" + first + "' (known: model, state, run, doctor, bench, help)";
+    if (name == "bench") return "unknown bench '" + first + "' (known: loop, client)";
+    return name + ": unexpected argument '" + first + "'";
+  }
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) return what.substr(0, what.find(':')) + " needs a value";
+  if (dynamic_cast<const CLI::RequiredError*>(&e)) {
+    if (name == "bench") {
+      const auto rest = command->remaining();
+      return rest.empty() ? "bench needs 'loop' or 'client'" : "unknown bench '" + rest.front() + "' (known: loop, client)";
+    }
+    if (what.rfind("PROGRAM", 0) == 0) return "run needs a program file (PROGRAM.json)";
+    if (what.rfind("--robot", 0) == 0)
+      return name + (name == "run" ? " needs --robot sim or --robot HOST:PORT" : " needs --robot HOST:PORT");
+    return name + ": " + what;
+  }
+  if (dynamic_cast<const CLI::ValidationError*>(&e)) {
+    // "--cycles: takes a whole number ..." -> "--cycles takes a whole number ...",
+    // "--robot: 'x:0': the port ..." -> "--robot 'x:0': the port ...".
+    const auto colon = what.find(": ");
+    if (colon != std::string::npos && (what.compare(colon + 2, 6, "takes ") == 0 || what.compare(colon + 2, 1, "'") == 0))
+      return what.substr(0, colon) + " " + what.substr(colon + 2);
+  }
+  return what;
+}
+
+// The message, then the usage of the command it is about.
+int usageError(const std::string& message, const CLI::App* command) {
+  const std::string parents = command->get_parent() ? commandPath(command->get_parent()) : "";
+  std::fprintf(stderr, "rci-cli: %s\n\n%s", message.c_str(), command->help(parents).c_str());
+  return 2;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  using namespace rci_cli;
-  std::vector<std::string> words(argv + 1, argv + argc);
+  CLI::App app("Headless tools for ROKAE xMate robots and the simulator: a model's limits, a robot's live "
+               "state, this machine's real-time fitness, loop and client benchmarks, running taught programs. "
+               "Without a command: the limits of the xMate Pro 7 (rci-cli model).",
+               "rci-cli");
+  app.footer("Exit status: 0 success, 1 failure at run time (the message says why), 2 bad arguments.\n"
+             "rci-cli COMMAND --help describes a command.");
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.require_subcommand(0, 1);
+
+  xmate::XmateType model_type = xmate::XMATE7_PRO;
+  CLI::App* model = app.add_subcommand("model", "the published limits of a model (default xmate7_pro)");
+  model->add_option_function<std::string>("NAME", [&](const std::string& text) { model_type = parseModel(text); },
+                                          "xmate3_pro, xmate7_pro, xmate3 or xmate7")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            try {
+              parseModel(text);
+              return std::string();
+            } catch (const UsageError& e) {
+              return std::string(e.what());
+            }
+          },
+          ""));
+
+  StateOptions state_options;
+  CLI::App* state = app.add_subcommand("state", "live readout of a robot's state (joints, torques, TCP pose, "
+                                                 "mode, error bits, command success rate)");
+  addRobotOption(*state, state_options.robot, false, "the controller (or rci-sim) to read")->required();
+  addWholeNumberOption(*state, "--count", state_options.count, 1, 100'000'000,
+                       "stop after N refreshes (default: until Ctrl-C)");
+  addModelOption(*state, state_options.model, "the robot's model (default xmate7_pro)");
+
+  RunOptions run_options;
+  CLI::App* run = app.add_subcommand("run", "run a taught program (docs/teach.md): pre-flight, then replay");
+  run->add_option("PROGRAM", run_options.program_path, "the program file (rci-program JSON)")->required();
+  addRobotOption(*run, run_options.robot, true,
+                 "sim: an in-process simulator for the program's model on its real-time clock; HOST:PORT: a "
+                 "controller or rci-sim")
+      ->required();
+  const CLI::Option* run_model =
+      addModelOption(*run, run_options.model, "the robot's model when it is not the program's (a mismatch is refused)");
+  run->add_option("--speed", run_options.speed, "speed override from 0.1 to 1.0 (default 1.0)")
+      ->type_name("R")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            try {
+              size_t end = 0;
+              const double v = std::stod(text, &end);
+              if (end == text.size() && v >= 0.1 && v <= 1.0) return std::string();
+            } catch (const std::exception&) {
+            }
+            return "takes a speed override from 0.1 to 1.0 (e.g. 0.5 = 50 %), got '" + text + "'";
+          },
+          ""));
+  run->add_option("--report", run_options.report_path, "write the run report (JSON) to FILE")
+      ->type_name("FILE")
+      ->check(CLI::Validator(
+          [](std::string& text) { return text.empty() ? std::string("needs a file name") : std::string(); }, ""));
+  run->add_flag("--fast", run_options.fast,
+                "with --robot sim: the lock-step clock, faster than real time (a controller keeps its own clock)");
+
+  CLI::App* doctor = app.add_subcommand("doctor", "real-time fitness of this machine, with advice");
+
+  CLI::App* bench = app.add_subcommand("bench", "benchmarks: the 1 kHz loop, the client's cost per cycle");
+  bench->require_subcommand(1);
+  LoopOptions loop_options;
+  CLI::App* loop = bench->add_subcommand("loop", "1 kHz joint-position loop: period, jitter, late and lost cycles");
+  addRobotOption(*loop, loop_options.robot, true, "sim: an in-process simulator (default); HOST:PORT: a robot");
+  addWholeNumberOption(*loop, "--cycles", loop_options.cycles, 1500, 10'000'000, "cycles to run (default 10000)");
+  loop->add_flag("--lockstep", loop_options.lockstep, "the in-process simulator on the lock-step clock");
+  addModelOption(*loop, loop_options.type, "the model (default xmate7_pro)");
+  long client_cycles = 100'000;
+  CLI::App* client = bench->add_subcommand("client", "the client's cost per cycle (decode, callback, encode, send)");
+  addWholeNumberOption(*client, "--cycles", client_cycles, 1000, 100'000'000, "cycles to measure (default 100000)");
+
+  CLI::App* help = app.add_subcommand("help", "this text");
+
   try {
-    if (words.empty()) return runModel(Args({}));
-    const std::string command = words[0];
-    if (command == "help" || command == "--help" || command == "-h") {
-      std::fputs(usage().c_str(), stdout);
+    app.parse(argc, argv);
+    run_options.have_model = run_model->count() > 0;
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    const CLI::App* command = selectedCommand(app);
+    return usageError(explain(e, app, command), command);
+  } catch (const UsageError& e) {  // thrown by an option's callback
+    const CLI::App* command = selectedCommand(app);
+    return usageError(e.what(), command);
+  }
+
+  try {
+    if (help->parsed()) {  // the whole program's help (app.help() would describe `help` itself)
+      std::fputs(app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal).c_str(), stdout);
       return 0;
     }
-    if (command == "model") return runModel(Args({words.begin() + 1, words.end()}));
-    if (command == "state") return runState(Args({words.begin() + 1, words.end()}));
-    if (command == "run") return runRun(Args({words.begin() + 1, words.end()}));
-    if (command == "doctor") return runDoctor(Args({words.begin() + 1, words.end()}));
-    if (command == "bench") {
-      if (words.size() < 2) throw UsageError("bench needs 'loop' or 'client'");
-      if (words[1] == "loop") return runBenchLoop(Args({words.begin() + 2, words.end()}));
-      if (words[1] == "client") return runBenchClient(Args({words.begin() + 2, words.end()}));
-      throw UsageError("unknown bench '" + words[1] + "' (known: loop, client)");
-    }
-    throw UsageError("unknown command '" + command + "'");
+    if (state->parsed()) return runState(state_options);
+    if (run->parsed()) return runRun(run_options);
+    if (doctor->parsed()) return runDoctor();
+    if (loop->parsed()) return runBenchLoop(loop_options);
+    if (client->parsed()) return runBenchClient(client_cycles);
+    return runModel(model_type);  // `rci-cli` alone or `rci-cli model [NAME]`
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "rci-cli: %s\n\n%s", e.what(), usage().c_str());
-    return 2;
+    const CLI::App* command = selectedCommand(app);
+    return usageError(e.what(), command);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rci-cli: %s\n", e.what());
     return 1;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// rci-sim's command line: the options, their defaults, and their validation.
+// rci-sim's command line (CLI11): the options, their defaults, and their validation.
 #pragma once
 
 #include <cstdint>

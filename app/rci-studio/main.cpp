@@ -43,6 +43,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "rci-studio: %s\n", qPrintable(error));
     return 2;
   }
+  if (options.help_all) {
+    QCoreApplication core(argc, argv);
+    showStudioHelpAll();
+  }
   if (options.help) {
     std::printf("%s", qPrintable(studioUsage()));
     return 0;

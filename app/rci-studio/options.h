@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Command-line options of rci-studio: --model, --robot HOST:PORT, --lockstep, --screenshot FILE.
+// Command-line options of rci-studio (QCommandLineParser): --model, --robot HOST:PORT, --lockstep,
+// --screenshot FILE, -h/--help, -v/--version.
 #pragma once
 
 #include <QString>
@@ -12,9 +13,13 @@ struct StudioOptions {
   bool model_given = false;       // --model was on the command line
   QString screenshot;             // empty: run interactively
   bool help = false;
+  bool help_all = false;          // --help-all: the help with Qt's own options (showStudioHelpAll)
   bool version = false;
 };
 
 // Parses arguments (without argv[0]). false and error set (what was wrong, what to do) on bad input.
 bool parseStudioOptions(const QStringList& arguments, StudioOptions& options, QString& error);
 QString studioUsage();
+// Prints the help with Qt's own options and exits 0 (QCommandLineParser::process); needs a
+// QCoreApplication.
+[[noreturn]] void showStudioHelpAll();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// INIParser: sections, keys, comments, whitespace, quotes, typed getters, missing keys, and the
-// line-numbered error for a malformed file.
+// INIParser (inih behind the vendor-compatible class): sections, keys, comments, whitespace, quotes,
+// typed getters, missing keys, indented lines, a UTF-8 byte order mark, and the line-numbered error
+// for a malformed file.
 #include <QtTest>
 
 #include <QTemporaryDir>
@@ -20,6 +21,8 @@ class TestIni : public QObject {
   void typedGetters();
   void missingFileAndKeys();
   void malformedLineIsReportedWithItsNumber();
+  void indentedLinesAreKeysNotContinuations();
+  void byteOrderMarkAndLongLines();
 
  private:
   std::string write(const char* text);
@@ -81,6 +84,29 @@ void TestIni::malformedLineIsReportedWithItsNumber() {
   QVERIFY2(QString::fromStdString(ini.LastError()).contains(":3: expected key = value"), ini.LastError().c_str());
   QVERIFY(!ini.ReadINI(write("[unclosed\n")));
   QVERIFY(QString::fromStdString(ini.LastError()).contains(":1: a section header"));
+}
+
+void TestIni::indentedLinesAreKeysNotContinuations() {
+  INIParser ini;
+  QVERIFY(ini.ReadINI(write("[network]\n  ip = 10.0.0.3\n\tport = 1337 # the RCI port\n  name = a;b ; comment\n")));
+  QCOMPARE(QString::fromStdString(ini.GetString("network", "ip")), QString("10.0.0.3"));
+  QCOMPARE(ini.GetInt("network", "port"), 1337);
+  QCOMPARE(QString::fromStdString(ini.GetString("network", "name")), QString("a;b"));
+  // Later values of a key replace earlier ones.
+  QVERIFY(ini.ReadINI(write("[s]\nk = 1\nk = 2\n")));
+  QCOMPARE(ini.GetInt("s", "k"), 2);
+}
+
+void TestIni::byteOrderMarkAndLongLines() {
+  INIParser ini;
+  QVERIFY(ini.ReadINI(write("\xEF\xBB\xBF[network]\nip=127.0.0.1\n")));
+  QCOMPARE(QString::fromStdString(ini.GetString("network", "ip")), QString("127.0.0.1"));
+  const std::string long_line = "[s]\nk=" + std::string(300, 'x') + "\n";
+  QVERIFY(!ini.ReadINI(write(long_line.c_str())));
+  QVERIFY2(QString::fromStdString(ini.LastError()).contains(":2: the line is longer than"), ini.LastError().c_str());
+  QVERIFY(!ini.ReadINI(write("[s]\n= value\n")));
+  QVERIFY2(QString::fromStdString(ini.LastError()).contains(":2: expected key = value, got '= value'"),
+           ini.LastError().c_str());
 }
 
 QTEST_APPLESS_MAIN(TestIni)

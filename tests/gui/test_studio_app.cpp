@@ -52,8 +52,18 @@ class TestStudioApp : public QObject {
   void helpExitsZero() {
     const Run run = runStudio({"--help"});
     QCOMPARE(run.code, 0);
-    QVERIFY(run.out.contains("--screenshot FILE"));
-    QVERIFY(run.out.contains("--robot HOST:PORT"));
+    QVERIFY(run.out.contains("--screenshot <FILE>"));
+    QVERIFY(run.out.contains("--robot <HOST:PORT>"));
+    QVERIFY(run.out.contains("Usage: rci-studio [options]"));
+    const Run shortHelp = runStudio({"-h"});
+    QCOMPARE(shortHelp.code, 0);
+    QCOMPARE(shortHelp.out, run.out);
+    const Run all = runStudio({"--help-all"});
+    QCOMPARE(all.code, 0);
+    QVERIFY2(all.out.contains("--screenshot <FILE>"), qPrintable(all.out));
+    const Run version = runStudio({"--version"});
+    QCOMPARE(version.code, 0);
+    QVERIFY2(version.out.startsWith("rci-studio "), qPrintable(version.out));
   }
   void badOptionsExitTwo() {
     const Run unknown = runStudio({"--frobnicate"});
@@ -67,7 +77,24 @@ class TestStudioApp : public QObject {
     QVERIFY2(robot.err.contains("HOST:PORT"), qPrintable(robot.err));
     const Run missing = runStudio({"--screenshot"});
     QCOMPARE(missing.code, 2);
-    QVERIFY2(missing.err.contains("needs a value"), qPrintable(missing.err));
+    QVERIFY2(missing.err.contains("--screenshot needs a value"), qPrintable(missing.err));
+    const Run next_option = runStudio({"--screenshot", "--lockstep"});
+    QCOMPARE(next_option.code, 2);
+    QVERIFY2(next_option.err.contains("--screenshot needs a value"), qPrintable(next_option.err));
+    // --opt=value is the same as --opt value.
+    const Run equals = runStudio({"--model=ur5"});
+    QCOMPARE(equals.code, 2);
+    QVERIFY2(equals.err.contains("unknown model \"ur5\""), qPrintable(equals.err));
+    const Run flag_value = runStudio({"--lockstep=1"});
+    QCOMPARE(flag_value.code, 2);
+    QVERIFY2(flag_value.err.contains("--lockstep"), qPrintable(flag_value.err));
+    const Run stray = runStudio({"robot.png"});
+    QCOMPARE(stray.code, 2);
+    QVERIFY2(stray.err.contains("unexpected argument \"robot.png\""), qPrintable(stray.err));
+    // --screenshot and --robot exclude each other.
+    const Run both = runStudio({"--screenshot", "x.png", "--robot", "10.0.0.1:1337"});
+    QCOMPARE(both.code, 2);
+    QVERIFY2(both.err.contains("--screenshot uses the built-in simulator; leave out --robot"), qPrintable(both.err));
   }
   void screenshotShowsTheWindowAndRobot() {
     QTemporaryDir dir;

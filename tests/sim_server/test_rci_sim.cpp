@@ -121,6 +121,40 @@ class TestRciSim : public QObject {
     QVERIFY2(r.err.contains("--idle-timeout takes a whole number from 0 to 3600000"), qPrintable(r.err));
   }
 
+  // The command line is CLI11's: --opt=value as well as --opt value; every typed option range-checked;
+  // a missing value or a stray argument is a usage error (2) that says so. rci-sim has no options
+  // that exclude each other.
+  void optionSyntaxAndValueChecks() {
+    Finished r = runToEnd({"--port=70000"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--port takes a whole number from 0 to 65535, got '70000'"), qPrintable(r.err));
+    QVERIFY2(r.err.contains("run rci-sim --help for the options"), qPrintable(r.err));
+    r = runToEnd({"--lockstep-timeout", "0"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--lockstep-timeout takes a whole number from 1 to 60000, got '0'"), qPrintable(r.err));
+    r = runToEnd({"--control-port", "seven"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--control-port takes a whole number from 0 to 65535, got 'seven'"), qPrintable(r.err));
+    r = runToEnd({"--reboot-pause=600001"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--reboot-pause takes a whole number from 0 to 600000, got '600001'"), qPrintable(r.err));
+    r = runToEnd({"--control-bind", "1.2.3"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--control-bind takes an IPv4 address such as 127.0.0.1, got '1.2.3'"), qPrintable(r.err));
+    r = runToEnd({"--model=xmate9"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("unknown model 'xmate9'; choose one of:"), qPrintable(r.err));
+    r = runToEnd({"--lockstep", "--connect-timeout"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--connect-timeout needs a value"), qPrintable(r.err));
+    r = runToEnd({"extra"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("unexpected argument 'extra' (rci-sim takes options only)"), qPrintable(r.err));
+    r = runToEnd({"-h"});
+    QCOMPARE(r.exit_code, 0);
+    QVERIFY2(r.out.contains("--lockstep-timeout MS") && r.out.contains("--control-bind IP"), qPrintable(r.out));
+  }
+
   void helpListsTheOptions() {
     const Finished r = runToEnd({"--help"});
     QCOMPARE(r.exit_code, 0);

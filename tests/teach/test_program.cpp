@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// The program file format: the JSON reader/writer (escapes, numbers, line:column errors), programs
-// round-tripping through files, every kind of bad field named by instruction and field, atomic
-// saving that never loses the previous file, and truncated or garbled inputs that never crash.
+// The program file format: the JSON text layer on nlohmann-json (escapes, numbers, line:column
+// errors, duplicate members, overflow, invalid UTF-8, the saved layout), programs round-tripping
+// through files, every kind of bad field named by instruction and field, atomic saving that never
+// loses the previous file, and truncated or garbled inputs that never crash.
 #include <QtTest>
 
 #include <cmath>
 #include <random>
 
 #include "teach/atomic_file.h"
-#include "teach/json.h"
+#include "teach/json_text.h"
 #include "teach/program_io.h"
 #include "teach/recording.h"
 
@@ -110,6 +111,9 @@ class TestProgram : public QObject {
   void jsonEscapesRoundTrip();
   void jsonErrorsSayLineAndColumn_data();
   void jsonErrorsSayLineAndColumn();
+  void programJsonErrorsSayWhatAndWhere_data();
+  void programJsonErrorsSayWhatAndWhere();
+  void savedTextKeepsItsLayout();
   void programRoundTripsThroughAFile();
   void exampleProgramLoads();
   void badFieldsAreNamed_data();
@@ -124,65 +128,148 @@ class TestProgram : public QObject {
 };
 
 void TestProgram::jsonParsesEveryKind() {
-  const JsonValue v = parseJson(R"( {"a": [1, -2.5e3, 0.125, 1E-2], "b": true, "c": false, "d": null, "e": "x", "f": {}} )");
-  QVERIFY(v.isObject());
+  const Json v = parseJsonText(R"( {"a": [1, -2.5e3, 0.125, 1E-2], "b": true, "c": false, "d": null, "e": "x", "f": {}} )");
+  QVERIFY(v.is_object());
   QCOMPARE(v.size(), size_t(6));
-  const JsonValue* a = v.find("a");
-  QVERIFY(a && a->isArray() && a->size() == 4);
-  QCOMPARE(a->at(1).asNumber(), -2500.0);
-  QCOMPARE(a->at(3).asNumber(), 0.01);
-  QVERIFY(v.find("b")->asBool());
-  QVERIFY(!v.find("c")->asBool());
-  QCOMPARE(v.find("d")->kind(), JsonValue::Kind::kNull);
-  QCOMPARE(v.find("e")->asString(), std::string("x"));
-  QVERIFY(v.find("f")->isObject());
-  QVERIFY(!v.find("missing"));
-  // Doubles round-trip exactly.
-  JsonValue n = JsonValue::array();
-  for (double d : {0.1, 1.0 / 3.0, -1e-300, 6.02214076e23, 0.0}) n.push(JsonValue::number(d));
-  const JsonValue back = parseJson(writeJson(n));
-  for (size_t i = 0; i < n.size(); ++i) QCOMPARE(back.at(i).asNumber(), n.at(i).asNumber());
+  const Json& a = v.at("a");
+  QVERIFY(a.is_array() && a.size() == 4);
+  QCOMPARE(a[1].get<double>(), -2500.0);
+  QCOMPARE(a[3].get<double>(), 0.01);
+  QVERIFY(v.at("b").get<bool>());
+  QVERIFY(!v.at("c").get<bool>());
+  QVERIFY(v.at("d").is_null());
+  QCOMPARE(v.at("e").get<std::string>(), std::string("x"));
+  QVERIFY(v.at("f").is_object());
+  QVERIFY(v.find("missing") == v.end());
+  // Member order is kept.
+  std::string keys;
+  for (const auto& item : v.items()) keys += item.key();
+  QCOMPARE(keys, std::string("abcdef"));
+  // Doubles round-trip exactly; underflow reads as 0.
+  Json n = Json::array();
+  for (double d : {0.1, 1.0 / 3.0, -1e-300, 6.02214076e23, 0.0}) n.push_back(d);
+  const Json back = parseJsonText(jsonText(n));
+  for (size_t i = 0; i < n.size(); ++i) QCOMPARE(back[i].get<double>(), n[i].get<double>());
+  QCOMPARE(parseJsonText("[1e-999]")[0].get<double>(), 0.0);
   // Non-finite numbers cannot be written.
-  QVERIFY_THROWS_EXCEPTION(std::invalid_argument, writeJson(JsonValue::number(NAN)));
+  QVERIFY_THROWS_EXCEPTION(std::invalid_argument, jsonText(Json::array({NAN})));
+  QVERIFY_THROWS_EXCEPTION(std::invalid_argument, jsonText(Json::array({INFINITY})));
 }
 
 void TestProgram::jsonEscapesRoundTrip() {
-  const JsonValue v = parseJson(R"(["a\"b\\c\/d\b\f\n\r\t", "\u00e9\u20ac", "\ud83d\ude00"])");
-  QCOMPARE(v.at(0).asString(), std::string("a\"b\\c/d\b\f\n\r\t"));
-  QCOMPARE(v.at(1).asString(), std::string("\xc3\xa9\xe2\x82\xac"));
-  QCOMPARE(v.at(2).asString(), std::string("\xf0\x9f\x98\x80"));
-  JsonValue s = JsonValue::array();
-  s.push(JsonValue::string(std::string("ctl\x01 \"q\" \\ \n")));
-  QCOMPARE(parseJson(writeJson(s)).at(0).asString(), s.at(0).asString());
+  const Json v = parseJsonText(R"(["a\"b\\c\/d\b\f\n\r\t", "\u00e9\u20ac", "\ud83d\ude00"])");
+  QCOMPARE(v[0].get<std::string>(), std::string("a\"b\\c/d\b\f\n\r\t"));
+  QCOMPARE(v[1].get<std::string>(), std::string("\xc3\xa9\xe2\x82\xac"));
+  QCOMPARE(v[2].get<std::string>(), std::string("\xf0\x9f\x98\x80"));
+  Json s = Json::array();
+  s.push_back(std::string("ctl\x01 \"q\" \\ \n \xc3\xa9"));
+  QCOMPARE(parseJsonText(jsonText(s))[0].get<std::string>(), s[0].get<std::string>());
+  // A string that is not UTF-8 is written with U+FFFD in place of the bad byte, so it reads back.
+  Json bad = Json::array({std::string("a\xff")});
+  QCOMPARE(parseJsonText(jsonText(bad))[0].get<std::string>(), std::string("a\xef\xbf\xbd"));
 }
 
 void TestProgram::jsonErrorsSayLineAndColumn_data() {
-  QTest::addColumn<QString>("text");
+  QTest::addColumn<QByteArray>("text");
   QTest::addColumn<QString>("expected");
-  QTest::newRow("bad literal") << "{\n  \"a\": tru\n}" << "line 2, column 8";
-  QTest::newRow("missing comma") << "[1 2]" << "line 1, column 4: expected ',' or ']'";
-  QTest::newRow("trailing text") << "{} x" << "unexpected text after the end";
-  QTest::newRow("duplicate key") << "{\"a\": 1,\n \"a\": 2}" << "line 2, column 2: duplicate member \"a\"";
-  QTest::newRow("NaN") << "[NaN]" << "NaN and Infinity are not JSON numbers";
-  QTest::newRow("overflow") << "[1e999]" << "too large";
-  QTest::newRow("leading zero") << "[01]" << "leading zeros";
-  QTest::newRow("bad escape") << "[\"\\x\"]" << "invalid escape";
-  QTest::newRow("control char") << "[\"a\nb\"]" << "control character";
-  QTest::newRow("unterminated") << "[\"abc" << "missing closing";
-  QTest::newRow("empty") << "" << "expected a value";
-  QTest::newRow("lone surrogate") << "[\"\\udc00\"]" << "low surrogate";
-  QTest::newRow("deep") << QString(300, '[') << "nesting deeper";
+  QTest::newRow("bad literal") << QByteArray("{\n  \"a\": tru\n}") << "line 2, column 11: syntax error while parsing value - invalid literal";
+  QTest::newRow("missing comma") << QByteArray("[1 2]") << "line 1, column 4: syntax error while parsing array - unexpected number literal; expected ']'";
+  QTest::newRow("trailing text") << QByteArray("{} x") << "line 1, column 4: syntax error while parsing value - invalid literal; last read: '{} x'; expected end of input";
+  QTest::newRow("duplicate key") << QByteArray("{\"a\": 1,\n \"a\": 2}") << "line 2, column 2: duplicate member \"a\"";
+  QTest::newRow("duplicate nested key") << QByteArray("[{\"a\": {\"b\": 1, \"a\": 2}, \"b\": 3, \"b\\\"\": 4, \"b\": 5}]")
+                                        << "line 1, column 44: duplicate member \"b\"";
+  QTest::newRow("NaN") << QByteArray("[NaN]") << "line 1, column 2: syntax error while parsing value - invalid literal; last read: '[N' (NaN and Infinity are not JSON numbers";
+  QTest::newRow("Infinity") << QByteArray("[-Infinity]") << "line 1, column 3: syntax error while parsing value - invalid number; expected digit after '-'; last read: '-I' (NaN and Infinity are not JSON numbers";
+  QTest::newRow("overflow") << QByteArray("[0,\n 1e999]") << "line 2, column 2: number 1e999 is out of range";
+  QTest::newRow("negative overflow") << QByteArray("[-1.5e400, 2]") << "line 1, column 2: number -1.5e400 is out of range";
+  QTest::newRow("leading zero") << QByteArray("[01]") << "line 1, column 3: syntax error while parsing array - unexpected number literal";
+  QTest::newRow("bad escape") << QByteArray("[\"\\x\"]") << "line 1, column 4: syntax error while parsing value - invalid string: forbidden character after backslash";
+  QTest::newRow("control char") << QByteArray("[\"a\nb\"]") << "line 1, column 4: syntax error while parsing value - invalid string: control character U+000A (LF) must be escaped";
+  QTest::newRow("unterminated") << QByteArray("[\"abc") << "line 1, column 6: syntax error while parsing value - invalid string: missing closing quote";
+  QTest::newRow("empty") << QByteArray("") << "line 1, column 1: syntax error while parsing value - unexpected end of input";
+  QTest::newRow("lone surrogate") << QByteArray("[\"\\udc00\"]") << "line 1, column 8: syntax error while parsing value - invalid string: surrogate U+DC00..U+DFFF must follow U+D800..U+DBFF";
+  QTest::newRow("bad UTF-8") << QByteArray("[\"caf\xc3(\"]") << "line 1, column 6: invalid UTF-8 in a string (bytes 0xC3 0x28): the file must be saved as UTF-8 text";
+  QTest::newRow("UTF-16 surrogate in UTF-8") << QByteArray("[\"\xed\xa0\x80\"]") << "line 1, column 3: invalid UTF-8 in a string (bytes 0xED 0xA0)";
+  QTest::newRow("byte outside a string") << QByteArray("[\xff]") << "line 1, column 2: syntax error while parsing value - invalid literal; last read: '[\\xFF'";
+  QTest::newRow("deep") << QByteArray(300, '[') << "line 1, column 202: nesting deeper than 200 levels";
 }
 
 void TestProgram::jsonErrorsSayLineAndColumn() {
-  QFETCH(QString, text);
+  QFETCH(QByteArray, text);
   QFETCH(QString, expected);
   try {
-    parseJson(text.toStdString());
+    parseJsonText(text.toStdString());
     QFAIL("parsed");
-  } catch (const JsonError& e) {
-    QVERIFY2(QString(e.what()).contains(expected), e.what());
+  } catch (const JsonSyntaxError& e) {
+    QVERIFY2(QString::fromUtf8(e.what()).startsWith(expected), e.what());
+    QVERIFY2(QString::fromUtf8(e.what()).toUtf8() == QByteArray(e.what()), "the message is not valid UTF-8");
   }
+}
+
+// The whole message of parseProgram for each kind of problem the strict loader promises to refuse.
+void TestProgram::programJsonErrorsSayWhatAndWhere_data() {
+  QTest::addColumn<QByteArray>("text");
+  QTest::addColumn<QString>("expected");
+  const std::string q = R"("target": {"q": [0,0,0,0,0,0,0]})";
+  auto row = [](const char* name, const std::string& text, const char* expected) {
+    QTest::newRow(name) << QByteArray::fromStdString(text) << QString::fromUtf8(expected);
+  };
+  row("syntax error",
+      "{\"format\": \"rci-program\", \"version\": 1,\n \"robot\": \"xmate7_pro\"\n \"instructions\": []}",
+      "not valid JSON: line 3, column 15: syntax error while parsing object - unexpected string literal; expected '}'");
+  row("unknown member", withInstruction(R"({"type": "WAIT", "ms": 5, "speed": 0.5})"),
+      "instruction 1 (WAIT), field \"speed\": unknown member (known here: type, name, ms)");
+  row("unknown nested member", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,0,0,0,0,0], "qq": 1}, "speed": 0.5})"),
+      "instruction 1 (MOVEJ), field \"target.qq\": unknown member (known here: q, pose, psi)");
+  row("overflow", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,1e999,0,0,0,0]}, "speed": 0.5})"),
+      "not valid JSON: line 1, column 120: number 1e999 is out of range: a double holds magnitudes up to about 1.8e308");
+  row("duplicate key", withInstruction(R"({"type": "MOVEJ", )" + q + R"(, "speed": 0.5, "speed": 1})"),
+      "not valid JSON: line 1, column 147: duplicate member \"speed\" (each name may appear once in an object)");
+  row("bad UTF-8", withInstruction("{\"type\": \"WAIT\", \"name\": \"P\xe9\", \"ms\": 5}"),
+      "not valid JSON: line 1, column 108: invalid UTF-8 in a string (bytes 0xE9 0x22): the file must be saved as UTF-8 text");
+}
+
+void TestProgram::programJsonErrorsSayWhatAndWhere() {
+  QFETCH(QByteArray, text);
+  QFETCH(QString, expected);
+  QCOMPARE(errorOf(text.toStdString()), expected);
+}
+
+// Saving what was loaded gives the file back byte for byte: two spaces per level, arrays of numbers
+// on one line, numbers as short as they round-trip (0, not 0.0), members in the documented order.
+void TestProgram::savedTextKeepsItsLayout() {
+  const std::string path = dataDir() + "/resources/programs/example.json";
+  QCOMPARE(QString::fromStdString(programText(loadProgram(path))), QString::fromStdString(readFile(path)));
+  Program p;
+  p.robot = XMATE3;
+  Instruction wait;
+  wait.type = InstructionType::kWait;
+  wait.ms = 250;
+  wait.name = "pause \"1\"";
+  p.instructions.push_back(wait);
+  p.instructions.push_back(moveJ(Target{}, 1.0));
+  p.instructions.back().target.has_q = true;
+  p.instructions.back().target.q = {0, -0.5, 1e-7, 1.5, 0, 2, 0};
+  QCOMPARE(QString::fromStdString(programText(p)), QString::fromUtf8(R"({
+  "format": "rci-program",
+  "version": 1,
+  "robot": "xmate3",
+  "instructions": [
+    {
+      "type": "WAIT",
+      "name": "pause \"1\"",
+      "ms": 250
+    },
+    {
+      "type": "MOVEJ",
+      "target": {
+        "q": [0, -0.5, 1e-07, 1.5, 0, 2, 0]
+      },
+      "speed": 1
+    }
+  ]
+}
+)"));
 }
 
 void TestProgram::programRoundTripsThroughAFile() {
@@ -238,7 +325,7 @@ void TestProgram::badFieldsAreNamed_data() {
   row("q element not number", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,null,0,0,0,0]}, "speed": 0.5})"),
       "field \"target.q[2]\": expected a number, got null");
   row("q overflow", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,1e400,0,0,0,0]}, "speed": 0.5})"),
-      "too large for a double");
+      "number 1e400 is out of range");
   row("q NaN literal", withInstruction(R"({"type": "MOVEJ", "target": {"q": [0,0,NaN,0,0,0,0]}, "speed": 0.5})"),
       "NaN and Infinity are not JSON numbers");
   row("empty target", withInstruction(R"({"type": "MOVEL", "target": {}, "speed": 0.5})"),

@@ -9,6 +9,7 @@
 #include "model/robot_spec.h"
 #include "planning/cartesian_pose.h"
 #include "teach/atomic_file.h"
+#include "teach/json_text.h"
 
 namespace xmate::teach {
 namespace {
@@ -23,17 +24,24 @@ struct Where {
   }
 };
 
-std::string got(const JsonValue& v) { return std::string("got ") + kindName(v.kind()); }
+std::string got(const Json& v) { return std::string("got ") + kindName(v); }
 
-const JsonValue& require(const JsonValue& object, const std::string& key, const std::string& field, const Where& w) {
-  const JsonValue* v = object.find(key);
+// Object member by name, nullptr if absent.
+const Json* member(const Json& object, const std::string& key) {
+  const auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
+const Json& require(const Json& object, const std::string& key, const std::string& field, const Where& w) {
+  const Json* v = member(object, key);
   if (!v) w.fail(field, "missing");
   return *v;
 }
 
-void refuseUnknown(const JsonValue& object, std::initializer_list<const char*> known, const std::string& field,
+void refuseUnknown(const Json& object, std::initializer_list<const char*> known, const std::string& field,
                    const Where& w) {
-  for (const std::string& key : object.keys()) {
+  for (const auto& item : object.items()) {
+    const std::string& key = item.key();
     bool ok = false;
     std::string list;
     for (const char* k : known) {
@@ -44,23 +52,24 @@ void refuseUnknown(const JsonValue& object, std::initializer_list<const char*> k
   }
 }
 
-double finiteNumber(const JsonValue& v, const std::string& field, const Where& w) {
-  if (!v.isNumber()) w.fail(field, "expected a number, " + got(v));
-  if (!std::isfinite(v.asNumber())) w.fail(field, "not a finite number");
-  return v.asNumber();
+double finiteNumber(const Json& v, const std::string& field, const Where& w) {
+  if (!v.is_number()) w.fail(field, "expected a number, " + got(v));
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) w.fail(field, "not a finite number");
+  return d;
 }
 
 template <size_t N>
-std::array<double, N> numberArray(const JsonValue& v, const std::string& field, const char* unit, const Where& w) {
+std::array<double, N> numberArray(const Json& v, const std::string& field, const char* unit, const Where& w) {
   const std::string expected = "expected an array of " + std::to_string(N) + " numbers (" + unit + ")";
-  if (!v.isArray()) w.fail(field, expected + ", " + got(v));
+  if (!v.is_array()) w.fail(field, expected + ", " + got(v));
   if (v.size() != N) w.fail(field, expected + ", got " + std::to_string(v.size()) + " elements");
   std::array<double, N> out{};
-  for (size_t i = 0; i < N; ++i) out[i] = finiteNumber(v.at(i), field + "[" + std::to_string(i) + "]", w);
+  for (size_t i = 0; i < N; ++i) out[i] = finiteNumber(v[i], field + "[" + std::to_string(i) + "]", w);
   return out;
 }
 
-int integerIn(const JsonValue& v, const std::string& field, long lo, long hi, const Where& w) {
+int integerIn(const Json& v, const std::string& field, long lo, long hi, const Where& w) {
   const double d = finiteNumber(v, field, w);
   if (d != std::floor(d) || d < double(lo) || d > double(hi))
     w.fail(field, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
@@ -68,21 +77,21 @@ int integerIn(const JsonValue& v, const std::string& field, long lo, long hi, co
   return int(d);
 }
 
-bool boolean(const JsonValue& v, const std::string& field, const Where& w) {
-  if (!v.isBool()) w.fail(field, "expected true or false, " + got(v));
-  return v.asBool();
+bool boolean(const Json& v, const std::string& field, const Where& w) {
+  if (!v.is_boolean()) w.fail(field, "expected true or false, " + got(v));
+  return v.get<bool>();
 }
 
-Target targetFrom(const JsonValue& v, const std::string& field, const model::RobotSpec& spec, const Where& w) {
-  if (!v.isObject()) w.fail(field, "expected an object with \"q\" and/or \"pose\" + \"psi\", " + got(v));
+Target targetFrom(const Json& v, const std::string& field, const model::RobotSpec& spec, const Where& w) {
+  if (!v.is_object()) w.fail(field, "expected an object with \"q\" and/or \"pose\" + \"psi\", " + got(v));
   refuseUnknown(v, {"q", "pose", "psi"}, field, w);
   Target t;
-  if (const JsonValue* q = v.find("q")) {
+  if (const Json* q = member(v, "q")) {
     t.q = numberArray<7>(*q, field + ".q", "joint angles in rad", w);
     t.has_q = true;
     if (spec.dof == 6 && t.q[6] != 0) w.fail(field + ".q[6]", "must be 0 on the 6-axis " + std::string(spec.display_name));
   }
-  if (const JsonValue* pose = v.find("pose")) {
+  if (const Json* pose = member(v, "pose")) {
     t.pose = numberArray<16>(*pose, field + ".pose", "4x4 row-major homogeneous transform, m", w);
     t.has_pose = true;
     try {
@@ -91,7 +100,7 @@ Target targetFrom(const JsonValue& v, const std::string& field, const model::Rob
       w.fail(field + ".pose", std::string("not a homogeneous transform: ") + e.what());
     }
   }
-  if (const JsonValue* psi = v.find("psi")) {
+  if (const Json* psi = member(v, "psi")) {
     if (!t.has_pose) w.fail(field + ".psi", "an arm angle needs a \"pose\" beside it");
     t.psi = finiteNumber(*psi, field + ".psi", w);
     t.has_psi = true;
@@ -100,40 +109,42 @@ Target targetFrom(const JsonValue& v, const std::string& field, const model::Rob
   return t;
 }
 
-double speedFrom(const JsonValue& in, const Where& w) {
+double speedFrom(const Json& in, const Where& w) {
   const double s = finiteNumber(require(in, "speed", "speed", w), "speed", w);
   if (!(s > 0 && s <= 1)) w.fail("speed", "expected a speed ratio in (0, 1], got " + std::to_string(s));
   return s;
 }
 
-InstructionType typeFrom(const JsonValue& v, const Where& w) {
-  if (!v.isString()) w.fail("type", "expected a string, " + got(v));
+InstructionType typeFrom(const Json& v, const Where& w) {
+  if (!v.is_string()) w.fail("type", "expected a string, " + got(v));
+  const std::string& name = v.get_ref<const std::string&>();
   for (InstructionType t : {InstructionType::kMoveJ, InstructionType::kMoveL, InstructionType::kMoveC,
                             InstructionType::kWait, InstructionType::kSetDo, InstructionType::kWaitDi})
-    if (v.asString() == typeName(t)) return t;
-  w.fail("type", "unknown instruction type \"" + v.asString() + "\" (known: MOVEJ, MOVEL, MOVEC, WAIT, SET_DO, WAIT_DI)");
+    if (name == typeName(t)) return t;
+  w.fail("type", "unknown instruction type \"" + name + "\" (known: MOVEJ, MOVEL, MOVEC, WAIT, SET_DO, WAIT_DI)");
 }
 
-int signalFrom(const JsonValue& in, bool output, const Where& w) {
-  const JsonValue& v = require(in, "signal", "signal", w);
-  if (!v.isString()) w.fail("signal", "expected a string, " + got(v));
-  const int index = output ? doIndex(v.asString()) : diIndex(v.asString());
+int signalFrom(const Json& in, bool output, const Where& w) {
+  const Json& v = require(in, "signal", "signal", w);
+  if (!v.is_string()) w.fail("signal", "expected a string, " + got(v));
+  const std::string& name = v.get_ref<const std::string&>();
+  const int index = output ? doIndex(name) : diIndex(name);
   if (index < 0)
-    w.fail("signal", "unknown signal \"" + v.asString() + "\" (known: " +
+    w.fail("signal", "unknown signal \"" + name + "\" (known: " +
                          (output ? "DO0_0, DO0_1, DO0_2, DO0_3, DO1_0, DO1_1" : "DI0_0, DI0_1, DI0_2, DI0_3, DI1_0, DI1_1") +
                          ")");
   return index;
 }
 
-Instruction instructionFrom(const JsonValue& in, size_t index, const model::RobotSpec& spec) {
+Instruction instructionFrom(const Json& in, size_t index, const model::RobotSpec& spec) {
   Where w{"instruction " + std::to_string(index + 1)};
-  if (!in.isObject()) w.fail("", "expected an object, " + got(in));
+  if (!in.is_object()) w.fail("", "expected an object, " + got(in));
   Instruction out;
   out.type = typeFrom(require(in, "type", "type", w), w);
   w.prefix += std::string(" (") + typeName(out.type) + ")";
-  if (const JsonValue* name = in.find("name")) {
-    if (!name->isString()) w.fail("name", "expected a string, " + got(*name));
-    out.name = name->asString();
+  if (const Json* name = member(in, "name")) {
+    if (!name->is_string()) w.fail("name", "expected a string, " + got(*name));
+    out.name = name->get<std::string>();
   }
   switch (out.type) {
     case InstructionType::kMoveJ:
@@ -167,38 +178,38 @@ Instruction instructionFrom(const JsonValue& in, size_t index, const model::Robo
   return out;
 }
 
-JsonValue targetToJson(const Target& t) {
-  JsonValue v = JsonValue::object();
-  if (t.has_q) v.set("q", JsonValue::numbers(t.q.data(), t.q.size()));
-  if (t.has_pose) v.set("pose", JsonValue::numbers(t.pose.data(), t.pose.size()));
-  if (t.has_pose && t.has_psi) v.set("psi", JsonValue::number(t.psi));
+Json targetToJson(const Target& t) {
+  Json v = Json::object();
+  if (t.has_q) v["q"] = t.q;
+  if (t.has_pose) v["pose"] = t.pose;
+  if (t.has_pose && t.has_psi) v["psi"] = t.psi;
   return v;
 }
 
-JsonValue instructionToJson(const Instruction& in) {
-  JsonValue v = JsonValue::object();
-  v.set("type", JsonValue::string(typeName(in.type)));
-  if (!in.name.empty()) v.set("name", JsonValue::string(in.name));
+Json instructionToJson(const Instruction& in) {
+  Json v = Json::object();
+  v["type"] = typeName(in.type);
+  if (!in.name.empty()) v["name"] = in.name;
   switch (in.type) {
     case InstructionType::kMoveC:
-      v.set("via", targetToJson(in.via));
+      v["via"] = targetToJson(in.via);
       [[fallthrough]];
     case InstructionType::kMoveJ:
     case InstructionType::kMoveL:
-      v.set("target", targetToJson(in.target));
-      v.set("speed", JsonValue::number(in.speed));
+      v["target"] = targetToJson(in.target);
+      v["speed"] = in.speed;
       break;
     case InstructionType::kWait:
-      v.set("ms", JsonValue::number(in.ms));
+      v["ms"] = in.ms;
       break;
     case InstructionType::kSetDo:
-      v.set("signal", JsonValue::string(doName(in.signal)));
-      v.set("value", JsonValue::boolean(in.value));
+      v["signal"] = doName(in.signal);
+      v["value"] = in.value;
       break;
     case InstructionType::kWaitDi:
-      v.set("signal", JsonValue::string(diName(in.signal)));
-      v.set("value", JsonValue::boolean(in.value));
-      v.set("timeout_ms", JsonValue::number(in.timeout_ms));
+      v["signal"] = diName(in.signal);
+      v["value"] = in.value;
+      v["timeout_ms"] = in.timeout_ms;
       break;
   }
   return v;
@@ -206,51 +217,51 @@ JsonValue instructionToJson(const Instruction& in) {
 
 }  // namespace
 
-Program programFromJson(const JsonValue& doc) {
+Program programFromJson(const Json& doc) {
   const Where w;
-  if (!doc.isObject()) throw ProgramError("a program is a JSON object with \"format\": \"rci-program\", " + got(doc));
-  const JsonValue& format = require(doc, "format", "format", w);
-  if (!format.isString() || format.asString() != kProgramFormat)
+  if (!doc.is_object()) throw ProgramError("a program is a JSON object with \"format\": \"rci-program\", " + got(doc));
+  const Json& format = require(doc, "format", "format", w);
+  if (!format.is_string() || format.get_ref<const std::string&>() != kProgramFormat)
     w.fail("format", std::string("expected \"") + kProgramFormat + "\" (this is not an RCI Studio program)");
-  const JsonValue& version = require(doc, "version", "version", w);
-  if (!version.isNumber() || version.asNumber() != kProgramVersion)
+  const Json& version = require(doc, "version", "version", w);
+  if (!version.is_number() || version.get<double>() != kProgramVersion)
     w.fail("version", "unsupported version (this RCI Studio reads version " + std::to_string(kProgramVersion) +
                           "); save the program again with a matching RCI Studio");
   refuseUnknown(doc, {"format", "version", "robot", "instructions"}, "", w);
-  const JsonValue& robot = require(doc, "robot", "robot", w);
-  if (!robot.isString()) w.fail("robot", "expected a model name string, " + got(robot));
-  const model::RobotSpec* spec = model::findRobotSpec(robot.asString());
-  if (!spec) w.fail("robot", "unknown model \"" + robot.asString() + "\" (known: xmate3_pro, xmate7_pro, xmate3, xmate7)");
-  const JsonValue& list = require(doc, "instructions", "instructions", w);
-  if (!list.isArray()) w.fail("instructions", "expected an array, " + got(list));
+  const Json& robot = require(doc, "robot", "robot", w);
+  if (!robot.is_string()) w.fail("robot", "expected a model name string, " + got(robot));
+  const model::RobotSpec* spec = model::findRobotSpec(robot.get_ref<const std::string&>());
+  if (!spec) w.fail("robot", "unknown model \"" + robot.get<std::string>() + "\" (known: xmate3_pro, xmate7_pro, xmate3, xmate7)");
+  const Json& list = require(doc, "instructions", "instructions", w);
+  if (!list.is_array()) w.fail("instructions", "expected an array, " + got(list));
   Program p;
   p.robot = spec->type;
-  for (size_t i = 0; i < list.size(); ++i) p.instructions.push_back(instructionFrom(list.at(i), i, *spec));
+  for (size_t i = 0; i < list.size(); ++i) p.instructions.push_back(instructionFrom(list[i], i, *spec));
   return p;
 }
 
-JsonValue programToJson(const Program& program) {
-  JsonValue doc = JsonValue::object();
-  doc.set("format", JsonValue::string(kProgramFormat));
-  doc.set("version", JsonValue::number(kProgramVersion));
-  doc.set("robot", JsonValue::string(std::string(model::robotSpec(program.robot).name)));
-  JsonValue list = JsonValue::array();
-  for (const Instruction& in : program.instructions) list.push(instructionToJson(in));
-  doc.set("instructions", std::move(list));
+Json programToJson(const Program& program) {
+  Json doc = Json::object();
+  doc["format"] = kProgramFormat;
+  doc["version"] = kProgramVersion;
+  doc["robot"] = std::string(model::robotSpec(program.robot).name);
+  Json list = Json::array();
+  for (const Instruction& in : program.instructions) list.push_back(instructionToJson(in));
+  doc["instructions"] = std::move(list);
   return doc;
 }
 
 Program parseProgram(const std::string& text) {
-  JsonValue doc;
+  Json doc;
   try {
-    doc = parseJson(text);
-  } catch (const JsonError& e) {
+    doc = parseJsonText(text);
+  } catch (const JsonSyntaxError& e) {
     throw ProgramError(std::string("not valid JSON: ") + e.what());
   }
   return programFromJson(doc);
 }
 
-std::string programText(const Program& program) { return writeJson(programToJson(program)); }
+std::string programText(const Program& program) { return jsonText(programToJson(program)); }
 
 Program loadProgram(const std::string& path) {
   const std::string text = readFile(path);

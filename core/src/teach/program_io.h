@@ -7,7 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "teach/json.h"
+#include <nlohmann/json_fwd.hpp>
+
 #include "teach/program.h"
 
 namespace xmate::teach {
@@ -22,10 +23,12 @@ class ProgramError : public std::runtime_error {
 inline constexpr const char* kProgramFormat = "rci-program";
 inline constexpr int kProgramVersion = 1;
 
-Program programFromJson(const JsonValue& document);
-JsonValue programToJson(const Program& program);
+// A parsed document (teach/json_text.h) <-> program.
+Program programFromJson(const nlohmann::ordered_json& document);
+nlohmann::ordered_json programToJson(const Program& program);
 
-// Text <-> program. parseProgram throws ProgramError (JSON syntax errors included).
+// Text <-> program. parseProgram throws ProgramError (JSON syntax errors included, as "not valid
+// JSON: line L, column C: ..."); programText is indented JSON, the same text for the same program.
 Program parseProgram(const std::string& text);
 std::string programText(const Program& program);
 

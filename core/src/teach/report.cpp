@@ -4,60 +4,64 @@
 
 #include "model/robot_spec.h"
 #include "teach/atomic_file.h"
+#include "teach/json_text.h"
 
 namespace xmate::teach {
 namespace {
 
-JsonValue instructionJson(const Program& program, size_t i, const InstructionReport& r) {
+Json instructionJson(const Program& program, size_t i, const InstructionReport& r) {
   const Instruction& in = program.instructions[i];
-  JsonValue v = JsonValue::object();
-  v.set("index", JsonValue::number(double(i + 1)));
-  v.set("type", JsonValue::string(typeName(in.type)));
-  if (!in.name.empty()) v.set("name", JsonValue::string(in.name));
-  v.set("status", JsonValue::string(statusName(r.status)));
-  if (!r.message.empty()) v.set("message", JsonValue::string(r.message));
+  Json v = Json::object();
+  v["index"] = i + 1;
+  v["type"] = typeName(in.type);
+  if (!in.name.empty()) v["name"] = in.name;
+  v["status"] = statusName(r.status);
+  if (!r.message.empty()) v["message"] = r.message;
   if (r.status != InstructionStatus::kNotRun) {
-    v.set("duration_s", JsonValue::number(r.duration));
-    v.set("q", JsonValue::numbers(r.q.data(), r.q.size()));
-    v.set("pose", JsonValue::numbers(r.pose.data(), r.pose.size()));
-    v.set("psi", JsonValue::number(r.psi));
+    v["duration_s"] = r.duration;
+    v["q"] = r.q;
+    v["pose"] = r.pose;
+    v["psi"] = r.psi;
   }
   if (isMotion(in.type) && r.status != InstructionStatus::kNotRun) {
-    v.set("max_joint_error_rad", JsonValue::number(r.max_joint_error));
-    v.set("max_tcp_error_m", JsonValue::number(r.max_tcp_error));
+    v["max_joint_error_rad"] = r.max_joint_error;
+    v["max_tcp_error_m"] = r.max_tcp_error;
   }
   return v;
 }
 
 }  // namespace
 
-JsonValue reportToJson(const Program& program, const RunReport& report) {
-  JsonValue doc = JsonValue::object();
-  doc.set("format", JsonValue::string(kReportFormat));
-  doc.set("version", JsonValue::number(1));
-  doc.set("robot", JsonValue::string(std::string(model::robotSpec(program.robot).name)));
-  doc.set("outcome", JsonValue::string(runStateName(report.outcome)));
-  if (!report.message.empty()) doc.set("message", JsonValue::string(report.message));
-  doc.set("failed_instruction",
-          report.failed_instruction >= 0 ? JsonValue::number(double(report.failed_instruction + 1)) : JsonValue());
-  doc.set("duration_s", JsonValue::number(report.duration));
-  JsonValue problems = JsonValue::array();
+Json reportToJson(const Program& program, const RunReport& report) {
+  Json doc = Json::object();
+  doc["format"] = kReportFormat;
+  doc["version"] = 1;
+  doc["robot"] = std::string(model::robotSpec(program.robot).name);
+  doc["outcome"] = runStateName(report.outcome);
+  if (!report.message.empty()) doc["message"] = report.message;
+  doc["failed_instruction"] = report.failed_instruction >= 0 ? Json(report.failed_instruction + 1) : Json();
+  doc["duration_s"] = report.duration;
+  Json problems = Json::array();
   for (const Problem& p : report.problems) {
-    JsonValue v = JsonValue::object();
-    v.set("instruction", JsonValue::number(double(p.instruction + 1)));
-    v.set("message", JsonValue::string(p.message));
-    problems.push(std::move(v));
+    Json v = Json::object();
+    v["instruction"] = p.instruction + 1;
+    v["message"] = p.message;
+    problems.push_back(std::move(v));
   }
-  doc.set("problems", std::move(problems));
-  JsonValue list = JsonValue::array();
+  doc["problems"] = std::move(problems);
+  Json list = Json::array();
   for (size_t i = 0; i < report.instructions.size() && i < program.instructions.size(); ++i)
-    list.push(instructionJson(program, i, report.instructions[i]));
-  doc.set("instructions", std::move(list));
+    list.push_back(instructionJson(program, i, report.instructions[i]));
+  doc["instructions"] = std::move(list);
   return doc;
 }
 
+std::string reportText(const Program& program, const RunReport& report) {
+  return jsonText(reportToJson(program, report));
+}
+
 void saveReport(const std::string& path, const Program& program, const RunReport& report) {
-  writeFileAtomically(path, writeJson(reportToJson(program, report)));
+  writeFileAtomically(path, reportText(program, report));
 }
 
 }  // namespace xmate::teach

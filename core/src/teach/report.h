@@ -6,15 +6,18 @@
 
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "teach/executor.h"
-#include "teach/json.h"
 #include "teach/program.h"
 
 namespace xmate::teach {
 
 inline constexpr const char* kReportFormat = "rci-run-report";
 
-JsonValue reportToJson(const Program& program, const RunReport& report);
+nlohmann::ordered_json reportToJson(const Program& program, const RunReport& report);
+// The report as indented JSON text (teach/json_text.h), as saveReport writes it.
+std::string reportText(const Program& program, const RunReport& report);
 
 // Writes the report atomically (atomic_file.h); std::runtime_error on failure.
 void saveReport(const std::string& path, const Program& program, const RunReport& report);

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# test_cli_options: rci-cli's command line (CLI11). Bad values, unknown options, missing values and
+# options that exclude each other exit 2 and say what was wrong, followed by the command's usage;
+# every command has its own --help (exit 0). Nothing here connects to a robot.
+# Arguments: RCI_CLI.
+set -u
+cli=$1
+passed=0
+
+fail() { echo "FAIL: $*"; exit 1; }
+
+# expect CODE TEXT ARGS...: rci-cli ARGS exits CODE and its output (stdout + stderr) contains TEXT.
+expect() {
+  local code=$1 text=$2
+  shift 2
+  local out status
+  out=$("$cli" "$@" 2>&1)
+  status=$?
+  [ "$status" -eq "$code" ] || fail "rci-cli $* exited $status, expected $code: $out"
+  case "$out" in
+    *"$text"*) ;;
+    *) fail "rci-cli $* does not say '$text': $out" ;;
+  esac
+  passed=$((passed + 1))
+}
+
+# Values out of range, for each typed option.
+expect 2 "--cycles takes a whole number from 1500 to 10000000, got '5'" bench loop --cycles 5
+expect 2 "--cycles takes a whole number from 1000 to 100000000, got 'many'" bench client --cycles=many
+expect 2 "--count takes a whole number from 1 to 100000000, got '0'" state --robot 127.0.0.1:1 --count 0
+expect 2 "--speed takes a speed override from 0.1 to 1.0 (e.g. 0.5 = 50 %), got '3'" run p.json --robot sim --speed 3
+expect 2 "--robot '10.0.0.1:99999': the port must be a whole number from 1 to 65535, got '99999'" \
+  state --robot 10.0.0.1:99999
+expect 2 "--robot ':1337': no host; write sim (the in-process simulator) or HOST:PORT" run p.json --robot :1337
+expect 2 "--robot 'sim': this command needs a controller address; write HOST:PORT" state --robot sim
+expect 2 "--model: unknown model 'ur5'; choose one of: xmate3_pro, xmate7_pro, xmate3, xmate7" \
+  bench loop --model ur5
+expect 2 "NAME: unknown model 'xmate9'" model xmate9
+# Unknown options and commands, extra arguments.
+expect 2 "state: unknown option '--frobnicate'" state --robot 127.0.0.1:1 --frobnicate
+expect 2 "unknown command 'frob' (known: model, state, run, doctor, bench, help)" frob
+expect 2 "unknown bench 'fast' (known: loop, client)" bench fast
+expect 2 "model: unexpected argument 'xmate3'" model xmate7 xmate3
+# Missing values and missing required arguments.
+expect 2 "--robot needs a value" state --robot
+expect 2 "--cycles needs a value" bench loop --cycles
+expect 2 "state needs --robot HOST:PORT" state --count 3
+expect 2 "run needs --robot sim or --robot HOST:PORT" run p.json
+expect 2 "run needs a program file (PROGRAM.json)" run --robot sim
+expect 2 "bench needs 'loop' or 'client'" bench
+# Options that exclude each other.
+expect 2 "--fast applies to the in-process simulator (--robot sim)" run p.json --robot 127.0.0.1:1 --fast
+expect 2 "--lockstep applies to the in-process simulator (--robot sim)" bench loop --robot 127.0.0.1:1 --lockstep
+# A usage error is followed by the usage of the command it is about.
+expect 2 "Usage: rci-cli bench loop [OPTIONS]" bench loop --cycles 5
+# Help: the whole program and each command.
+expect 0 "run a taught program" --help
+expect 0 "bench" help
+expect 0 "--report FILE" run --help
+expect 0 "--lockstep" bench loop --help
+expect 0 "--count N" state -h
+# The default and a model, with --opt=value and --opt value (no robot needed).
+expect 0 "xMate Pro 7 (xmate7_pro), 7 axes"
+expect 0 "xMate 3 (xmate3), 6 axes" model xmate3
+
+echo "$passed passed, 0 failed"
