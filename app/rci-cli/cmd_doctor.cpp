@@ -51,10 +51,13 @@ void checkScheduling() {
     report(Verdict::kFail, "SCHED_FIFO refused" + limits,
            "run as root, or add '@realtime - rtprio 99' to /etc/security/limits.conf and join that group");
   const std::string memlock = " (RLIMIT_MEMLOCK " + limitText(xmate::net::memlockLimitBytes()) + " bytes)";
-  if (status.memory_locked)
-    report(Verdict::kOk, "mlockall granted: memory will not be paged out" + memlock);
+  // Headless tools lock all their memory (mlockall, as rci-cli does at start); the library itself
+  // locks only the real-time thread's stack and state.
+  const std::string all = xmate::net::lockAllMemory();
+  if (status.memory_locked && all.empty())
+    report(Verdict::kOk, "memory locking granted (mlock, mlockall): memory will not be paged out" + memlock);
   else
-    report(Verdict::kFail, "mlockall refused" + memlock,
+    report(Verdict::kFail, "memory locking refused" + memlock + ": " + (all.empty() ? status.reason : all),
            "add '@realtime - memlock unlimited' to /etc/security/limits.conf, or run as root");
   if (const char* off = std::getenv("RCI_NO_REALTIME"); off && std::string(off) == "1")
     report(Verdict::kWarn, "RCI_NO_REALTIME=1 is set: the client will not even try real-time scheduling",

@@ -10,6 +10,7 @@
 #include <xmate/exception.h>
 
 #include "cli.h"
+#include "net/realtime.h"
 
 namespace {
 
@@ -185,6 +186,9 @@ int main(int argc, char** argv) {
       std::fputs(app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal).c_str(), stdout);
       return 0;
     }
+    // Commands that talk to a controller pin the whole process in RAM (the library locks only its
+    // real-time thread's memory); refused without privileges, reported by the session then.
+    if (state->parsed() || run->parsed() || loop->parsed() || client->parsed()) xmate::net::lockAllMemory();
     if (state->parsed()) return runState(state_options);
     if (run->parsed()) return runRun(run_options);
     if (doctor->parsed()) return runDoctor();

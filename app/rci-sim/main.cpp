@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "net/realtime.h"
 #include "options.h"
 #include "sim/server.h"
 #include "sim/server_control.h"
@@ -50,6 +51,11 @@ sigset_t blockStopSignals() {
 }
 
 int run(const rcisim::Options& o) {
+  // A headless real-time program: pin all of it in RAM (the cycle thread reports what it got).
+  if (o.realtime) {
+    if (const std::string refused = xmate::net::lockAllMemory(); !refused.empty())
+      std::cerr << "rci-sim: " << refused << '\n';
+  }
   const sigset_t stop_signals = blockStopSignals();
   if (!rcisim::isLoopbackAddress(o.bind_ip))
     logLine("warning: listening on " + o.bind_ip + ": anyone on that network can move the simulated robot");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target of the program loader (teach/program_io.h on nlohmann-json): any bytes either
 // load as a program or are refused with a ProgramError -- never another exception, a crash or a
 // sanitizer report -- and a program that loads saves to a text that loads back to the same text.

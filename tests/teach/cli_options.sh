@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # test_cli_options: rci-cli's command line (CLI11). Bad values, unknown options, missing values and
 # options that exclude each other exit 2 and say what was wrong, followed by the command's usage;
 # every command has its own --help (exit 0). Nothing here connects to a robot.

@@ -271,6 +271,7 @@ void ProgramPanel::sessionClosed() {
     run_label_.clear();
     model_->setCurrent(-1);
     run_state_->setText(tr("Ended: the connection closed"));
+    showStatus(tr("The run ended: the connection closed. Connect again, then run or step from the start."), true);
   }
   cancelPendingVia();
   updateButtons();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strict JSON text on nlohmann-json (json_text.h). nlohmann does the parsing; this adds what the
 // teach files promise on top of it: duplicate member names, overflowing numbers and deep nesting
 // refused, and every error located as "line L, column C".

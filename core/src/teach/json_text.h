@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JSON text for the teach files (programs, run reports), on nlohmann-json: a strict parse of a whole
 // document and a stable, indented layout for writing. The format checks of a program are
 // program_io's; this only turns text into a nlohmann::ordered_json (member order kept) and back.
