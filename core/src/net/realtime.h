@@ -13,7 +13,7 @@ namespace xmate::net {
 struct RealtimeStatus {
   bool fifo = false;           // SCHED_FIFO granted to this thread
   int priority = 0;            // its priority when granted
-  bool memory_locked = false;  // the thread's stack and the regions it was given are locked (mlock)
+  bool memory_locked = false;  // the thread's stack, its regions and the process are locked in RAM
   std::string reason;          // empty when both succeeded; else what was refused and what to do
   std::string describe() const;  // "SCHED_FIFO 80, memory locked" / "normal priority: ..."
 };
@@ -25,10 +25,9 @@ struct MemoryRegion {
 };
 
 // Tries SCHED_FIFO at priority (1..99) for the calling thread, and locks in RAM the thread's stack
-// (kLockedStackBytes, pre-faulted) and `regions` -- only what the loop touches, so a library inside
-// a GUI does not pin the whole process (lockAllMemory() is the headless tools' choice). Set
-// RCI_NO_REALTIME=1 to skip all of it (e.g. on a shared development machine). Call it on the thread
-// itself, before its loop.
+// (kLockedStackBytes, pre-faulted), `regions`, and -- because what a loop's callbacks touch is not
+// known here -- the whole process (mlockall). Set RCI_NO_REALTIME=1 to skip all of it (e.g. on a
+// shared development machine). Call it on the thread itself, before its loop.
 inline constexpr size_t kLockedStackBytes = 256 * 1024;
 RealtimeStatus enableRealtimeForThisThread(int priority = 80, std::initializer_list<MemoryRegion> regions = {});
 

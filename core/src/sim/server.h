@@ -37,7 +37,7 @@ struct ServerConfig {
   // motion or hand guiding running, is silent: it gives way to the next client that sends Connect
   // (it is dropped and logged). Until then it keeps the controller. 0: sessions never give way.
   int idle_timeout_ms = 10000;
-  // Try SCHED_FIFO (at realtime_priority) and lock the cycle thread's stack; the outcome is in status().
+  // Try SCHED_FIFO (at realtime_priority) and lock memory (its stack, the process); the outcome is in status().
   bool realtime = false;
   int realtime_priority = 80;
   SimConfig sim;
