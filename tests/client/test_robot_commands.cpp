@@ -337,7 +337,10 @@ void TestRobotCommands::sessionTimingAndCounters() {
   QCOMPARE(t.counters.states_wrong_length, uint64_t(0));
   QCOMPARE(t.counters.states_bad_value, uint64_t(0));
   QVERIFY(t.period.cycles > 100);
-  QVERIFY(t.period.min_us > 0);
+  // The periods were measured (a backlog the real-time thread drains at once after a stall -- seen
+  // under AddressSanitizer on a loaded machine -- can legitimately give a shortest period of 0).
+  QVERIFY(t.period.mean_us > 0);
+  QVERIFY(t.period.max_us >= t.period.min_us);
   // The GUI ring holds consecutive samples of what arrived.
   client::StateSample sample, next;
   QVERIFY(robot->connection().samples().pop(sample));
