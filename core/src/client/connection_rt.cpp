@@ -28,6 +28,18 @@ void endRun(Connection::Realtime& rt, ControlOutcome outcome) {
   rt.run_state.notify_all();
 }
 
+// The result fields of a run, before it starts (or ends without running).
+void clearRunResult(Connection::Realtime& rt) {
+  rt.log_written = 0;
+  rt.cycles = 0;
+  rt.exception = nullptr;
+  rt.fault = {};
+  rt.wrong_length = 0;
+  rt.longest_stall_ns = 0;
+  rt.stall_message_id = 0;
+  rt.states_skipped = 0;
+}
+
 void logCycle(Connection::Realtime& rt, const RobotCommand* answered) {
   ControlRecord& record = rt.log[rt.log_written % kLogCapacity];
   record.state = rt.state;
@@ -328,14 +340,7 @@ void beginRunIfArmed(Connection::Realtime& rt, int64_t now_ns) {
   rt.phase = RunPhase::kWaitingForStart;
   rt.phase_states = 0;
   rt.run_start_ns = now_ns;
-  rt.log_written = 0;
-  rt.cycles = 0;
-  rt.exception = nullptr;
-  rt.fault = {};
-  rt.wrong_length = 0;
-  rt.longest_stall_ns = 0;
-  rt.stall_message_id = 0;
-  rt.states_skipped = 0;
+  clearRunResult(rt);
   rt.command = RobotCommand{};
   // The newest state may be one the controller waits for and nobody answered yet (no hold was
   // requested, e.g. a tool driving Connection directly): answer it now if it came after StartMove.
@@ -354,19 +359,8 @@ void processDatagram(Connection::Realtime& rt, long size, const net::Endpoint& f
 void finishArmedRunAsClosed(Connection::Realtime& rt) {
   uint32_t armed = kRunArmed;
   if (!rt.run_state.compare_exchange_strong(armed, kRunClosing)) return;
-  rt.outcome = ControlOutcome::kSessionClosed;
-  rt.last_state = rt.state;
-  rt.cycles = 0;
-  rt.log_written = 0;
-  rt.exception = nullptr;
-  rt.fault = {};
-  rt.wrong_length = 0;
-  rt.longest_stall_ns = 0;
-  rt.stall_message_id = 0;
-  rt.states_skipped = 0;
-  rt.run_active = false;
-  rt.run_state.store(kRunDone, std::memory_order_release);
-  rt.run_state.notify_all();
+  clearRunResult(rt);
+  endRun(rt, ControlOutcome::kSessionClosed);
 }
 
 void runRealtimeThread(Connection::Realtime& rt) {
