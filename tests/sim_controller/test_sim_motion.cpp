@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // sim::Controller motion tests: holding and brakes, the five controller modes (joint position,
 // Cartesian position, joint impedance, Cartesian impedance, torque) following commands, filters,
-// lost commands and the success rate, and step()'s cost and allocations.
+// lost commands (and how the target rejoins them) and the success rate, and step()'s cost and allocations.
 #include <QtTest/QtTest>
 
 #include <chrono>
@@ -86,6 +86,8 @@ class TestSimMotion : public QObject {
   void torqueModeTorqueAcceleratesTheJoint();
   void filterLagFollowsCutOff();
   void lostCommandsDoNotTripTheRules();
+  void lostRunsRejoinWithoutAJolt();
+  void lostRunsRejoinWithoutAJoltInCartesianMode();
   void successRateCountsTheLastHundred();
   void instabilityAfterTooManyLostCommands();
   void stepIsCheapAndDoesNotAllocate();
@@ -372,9 +374,65 @@ void TestSimMotion::lostCommandsDoNotTripTheRules() {
   const auto lost = [](int k) { return k % 7 == 3 || (k % 97 >= 10 && k % 97 < 13); };
   const double max_error = runJointSCurve(h, kGoal, 1.0, lost);
   QVERIFY2(std::isfinite(max_error) && max_error >= 0, h.errorList().c_str());
-  h.idle(200);
+  h.idle(700);  // the target rejoins the commands after each loss, within ~0.5 s of the last one
   QVERIFY(maxAbsDiff(h.state().q, kGoal) < 1e-6);
   QVERIFY(h.status().lost_commands > 50);
+}
+
+// Runs of lost commands the client never noticed (UDP loss, answers that came late): wherever in
+// the motion they fall, the target rejoins the commands without a jolt, so no error bit is set.
+// Before the rejoin blend, 8 or more lost at a change of the S-curve's phase tripped the measured
+// acceleration monitor.
+void TestSimMotion::lostRunsRejoinWithoutAJolt() {
+  QStringList failures;
+  for (double speed : {1.0, 0.2})
+    for (int length : {1, 3, 8, 14})
+      for (int at = 3; at < 1500; at += 7) {
+        Harness h;
+        h.powerOnAndSettle();
+        QCOMPARE(h.startMove(CM::kJointPosition, MG::kJointPosition), uint8_t(0));
+        const double error = runJointSCurve(h, kGoal, speed, [&](int k) { return k >= at && k < at + length; });
+        if (!std::isfinite(error) || error < 0)
+          failures << QStringLiteral("speed %1, %2 lost from cycle %3: %4")
+                          .arg(speed).arg(length).arg(at).arg(QString::fromStdString(h.errorList()));
+        h.idle(700);
+        if (maxAbsDiff(h.state().q, kGoal) > 1e-6)
+          failures << QStringLiteral("speed %1, %2 lost from cycle %3: %4 rad from the goal after 0.7 s")
+                          .arg(speed).arg(length).arg(at).arg(maxAbsDiff(h.state().q, kGoal));
+      }
+  QVERIFY2(failures.isEmpty(), qPrintable(failures.join('\n')));
+}
+
+// The same for a Cartesian line (the target rejoins in joint space, after inverse kinematics).
+void TestSimMotion::lostRunsRejoinWithoutAJoltInCartesianMode() {
+  QStringList failures;
+  for (int length : {3, 8, 14})
+    for (int at = 3; at < 600; at += 11) {
+      Harness h;
+      h.powerOnAndSettle();
+      const Eigen::Isometry3d start = poseOf(h.state().toolTobase_pos_m);
+      CartMotionGenerator gen(0.5, 0.15);
+      gen.calculateSynchronizedValues_cart(0);
+      QCOMPARE(h.startMove(CM::kCartesianPosition, MG::kCartesianPosition), uint8_t(0));
+      Eigen::Isometry3d target = start;
+      bool finished = false;
+      for (int k = 0; !finished && !h.anyError(); ++k) {
+        double s = 0;
+        finished = gen.calculateDesiredValues_cart(0.001 * k, &s);
+        target = start;
+        target.translation().z() -= s;
+        if (k >= at && k < at + length && !finished)
+          h.lose();
+        else
+          h.stepCartesian(target, finished);
+      }
+      h.idle(700);
+      if (h.anyError())
+        failures << QStringLiteral("%1 lost from cycle %2: %3").arg(length).arg(at).arg(QString::fromStdString(h.errorList()));
+      else if ((poseOf(h.state().toolTobase_pos_m).translation() - target.translation()).norm() > 1e-6)
+        failures << QStringLiteral("%1 lost from cycle %2: off the last command after 0.7 s").arg(length).arg(at);
+    }
+  QVERIFY2(failures.isEmpty(), qPrintable(failures.join('\n')));
 }
 
 void TestSimMotion::successRateCountsTheLastHundred() {

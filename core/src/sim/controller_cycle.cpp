@@ -32,7 +32,9 @@ void Controller::Impl::advanceReference() {
       ref.ramp.step(limits.acceleration, kCycle);
       ref.joint_filter = ref.hold_target = ref.ramp.q;
     } else {
-      lowPassStep(ref.joint_filter, ref.hold_target, alpha(settings.joint_filter_hz));
+      ref.rejoin.step(limits.acceleration, kCycle);  // a motion that ended while rejoining
+      const JointVector target = ref.hold_target + ref.rejoin.offset;
+      lowPassStep(ref.joint_filter, target, alpha(settings.joint_filter_hz));
     }
     ref.track.advanceTo(ref.joint_filter, kCycle);
     return;
@@ -43,7 +45,9 @@ void Controller::Impl::advanceReference() {
     case MoveController::kJointImpedance:
     case MoveController::kCartesianPosition: {
       const bool cartesian = motion.controller == MoveController::kCartesianPosition;
-      lowPassStep(ref.joint_filter, motion.joint_target,
+      ref.rejoin.step(limits.acceleration, kCycle);
+      const JointVector target = motion.joint_target + ref.rejoin.offset;
+      lowPassStep(ref.joint_filter, target,
                   alpha(cartesian ? settings.cartesian_filter_hz : settings.joint_filter_hz));
       // auto_limit brakes towards the soft limits at half the rated deceleration.
       const JointVector next =

@@ -42,7 +42,7 @@ inline constexpr double kStartTolerance = 1e-3;
 inline constexpr int kRecoveryCycles = 50;        // robot_mode kAutomaticErrorRecovery after a recovery
 inline constexpr double kObserverCutoffHz = 100;  // bandwidth of the external torque estimate
 
-// Hand guiding: damping of the free directions and joints (docs/simulator_controller.md, "Drag").
+// Hand guiding: damping of the free directions and joints (docs/simulator_controller.md, "Hand guiding (drag)").
 inline constexpr double kDragTranslationDamping = 100;  // N s/m
 inline constexpr double kDragRotationDamping = 10;      // Nm s/rad
 inline constexpr double kDragJointDampingLarge = 20;    // Nm s/rad, 85 Nm joints
@@ -79,6 +79,10 @@ struct Motion {
   JointVector joint_target = JointVector::Zero();
   Eigen::Isometry3d pose_target = Eigen::Isometry3d::Identity();
   JointVector nullspace_q = JointVector::Zero();
+  // The first command after lost ones set the rejoin offset's position; the next one, if it comes
+  // in the following cycle, sets its velocity (the extrapolation's, expected over that cycle).
+  bool rejoin_velocity_pending = false;
+  JointVector rejoin_velocity = JointVector::Zero();
 };
 
 struct Drag {
@@ -97,6 +101,7 @@ struct ServoReference {
   Eigen::Isometry3d pose_filter = Eigen::Isometry3d::Identity();  // low-passed pose target
   Vector6d pose_filter_twist = Vector6d::Zero();
   JointVector torque_filter = JointVector::Zero();  // low-passed client torque
+  RejoinBlend rejoin;                               // added to the joint target after lost commands
 };
 
 // What the last cycle measured and estimated.
@@ -163,6 +168,10 @@ struct Controller::Impl {
   void acceptTorqueCommand(const RobotCommand& command, double t, ErrorBits& bits);
   void startReferenceAt(const JointVector& q);
   void extrapolateLostCommand();
+  bool jointTargetFollowsCommands() const;
+  void extrapolate(double t, JointVector& q, JointVector& dq) const;
+  void rejoinAfterGap(int gap, const JointVector& extrapolated, const JointVector& extrapolated_velocity,
+                      const JointVector& previous_target);
   void finishMotion();
   void stopFromMeasured();               // controlled stop, then hold
   void raiseErrors(const ErrorBits& bits);  // motion stops, bits stay until recovery

@@ -59,6 +59,7 @@ void Controller::Impl::placeArm(const JointVector& q) {
   ref.ramp.active = false;
   ref.track.resetAt(q, JointVector::Zero(), kCycle);
   ref.joint_filter = ref.hold_target = q;
+  ref.rejoin.clear();
   meas.ddq.setZero();
   meas.tcp = model::tcpPose(arm, q);
   meas.jacobian = model::tcpJacobian(arm, q);

@@ -109,7 +109,12 @@ void Controller::Impl::takeCommand(const RobotCommand* command) {
     extrapolateLostCommand();
     return;
   }
+  const int gap = motion.consecutive_lost;
   motion.consecutive_lost = 0;
+  const bool follows = jointTargetFollowsCommands() && !motion.awaiting_first_command;
+  JointVector extrapolated = motion.joint_target, extrapolated_velocity = JointVector::Zero();
+  if (follows && gap > 0) extrapolate(double(gap + 1) * kCycle, extrapolated, extrapolated_velocity);
+  const JointVector previous_target = motion.joint_target;
   const double t = double(id - motion.origin_id) * kCycle;
   ErrorBits bits{};
   switch (motion.generator) {
@@ -122,6 +127,7 @@ void Controller::Impl::takeCommand(const RobotCommand* command) {
     raiseErrors(bits);
     return;
   }
+  if (follows) rejoinAfterGap(gap, extrapolated, extrapolated_velocity, previous_target);
   if (command->motion.motion_generation_finished) finishMotion();
 }
 
@@ -212,17 +218,46 @@ void Controller::Impl::startReferenceAt(const JointVector& q) {
   ref.track.resetAt(q, JointVector::Zero(), kCycle);
   ref.joint_filter = q;
   ref.soft_limit_clamp.reset(q);
+  ref.rejoin.clear();
+}
+
+bool Controller::Impl::jointTargetFollowsCommands() const {
+  // Position targets follow the commands in joint space; impedance poses and torques do not.
+  return motion.controller != MoveController::kCartesianImpedance && motion.controller != MoveController::kTorque;
+}
+
+// The last command that arrived continued along its velocity and acceleration (the velocity of the
+// divided differences belongs half an interval back) for t seconds; dq is the mean velocity over
+// the cycle after t.
+void Controller::Impl::extrapolate(double t, JointVector& q, JointVector& dq) const {
+  const JointVector& a = motion.joint_rates.acceleration();
+  const JointVector v = motion.joint_rates.velocity() + 0.5 * kCycle * a;
+  q = motion.q_command + v * t + 0.5 * a * t * t;
+  dq = v + a * (t + 0.5 * kCycle);
 }
 
 void Controller::Impl::extrapolateLostCommand() {
   if (motion.awaiting_first_command) return;  // nothing to continue yet: hold
-  // Position targets continue along the last commanded velocity and acceleration (the velocity of
-  // the divided differences belongs half an interval back); impedance poses and torques hold.
-  if (motion.controller == MoveController::kCartesianImpedance || motion.controller == MoveController::kTorque) return;
-  const double t = motion.consecutive_lost * kCycle;  // time since the last command arrived
-  const JointVector& a = motion.joint_rates.acceleration();
-  const JointVector v = motion.joint_rates.velocity() + 0.5 * kCycle * a;
-  motion.joint_target = motion.q_command + v * t + 0.5 * a * t * t;
+  if (!jointTargetFollowsCommands()) return;  // impedance poses and torques hold
+  JointVector unused;
+  extrapolate(motion.consecutive_lost * kCycle, motion.joint_target, unused);
+}
+
+// The first command after a gap: the target stays where the extrapolation has taken it (the
+// difference goes into the rejoin offset). The command of the next cycle gives the client's
+// velocity; the offset takes the difference to the extrapolation's, so the target's velocity
+// carries on too. From then on the offset decays (RejoinBlend).
+void Controller::Impl::rejoinAfterGap(int gap, const JointVector& extrapolated,
+                                      const JointVector& extrapolated_velocity, const JointVector& previous_target) {
+  if (gap > 0) {
+    ref.rejoin.add(extrapolated - motion.joint_target, JointVector::Zero());
+    motion.rejoin_velocity = extrapolated_velocity;
+    motion.rejoin_velocity_pending = true;
+    return;
+  }
+  if (!motion.rejoin_velocity_pending) return;
+  motion.rejoin_velocity_pending = false;
+  ref.rejoin.add(JointVector::Zero(), motion.rejoin_velocity - (motion.joint_target - previous_target) / kCycle);
 }
 
 void Controller::Impl::finishMotion() {
@@ -244,6 +279,7 @@ void Controller::Impl::stopFromMeasured() {
   ref.ramp.start(plant.q, plant.dq);
   ref.track.resetAt(plant.q, plant.dq, kCycle);
   ref.joint_filter = ref.hold_target = plant.q;
+  ref.rejoin.clear();
 }
 
 void Controller::Impl::raiseErrors(const ErrorBits& bits) {
@@ -259,6 +295,7 @@ void Controller::Impl::powerOn() {
   ref.ramp.active = false;
   ref.track.resetAt(plant.q, JointVector::Zero(), kCycle);
   ref.joint_filter = ref.hold_target = plant.q;
+  ref.rejoin.clear();
   resetAllowances();  // outside a limit or the box: no error for being there, only for going further out
 }
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Everything the TCP commands configure on the simulated controller (setCollisionBehavior,
 // setJointImpedance, setFilters, ...), as one plain struct with the defaults a freshly booted
-// controller has. Defaults and their reasons: docs/simulator_controller.md, "Settings".
+// controller has. Defaults and their reasons: docs/simulator_controller.md, in each setting's
+// section ("Commands and filters", "Collision detection and the payload", ...).
 #pragma once
 
 #include <Eigen/Geometry>

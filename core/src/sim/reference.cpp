@@ -18,6 +18,15 @@ void StopRamp::step(const JointVector& deceleration, double dt) {
   active = moving;
 }
 
+void RejoinBlend::step(const JointVector& rated_acceleration, double dt) {
+  if (!active) return;
+  const JointVector cap = kAccelerationShare * rated_acceleration;
+  const JointVector wanted = -kOmega * kOmega * offset - 2.0 * kOmega * rate;
+  rate += wanted.cwiseMax(-cap).cwiseMin(cap) * dt;
+  offset += rate * dt;
+  if (offset.cwiseAbs().maxCoeff() < 1e-12 && rate.cwiseAbs().maxCoeff() < 1e-10) clear();
+}
+
 namespace {
 
 // The fastest speed (per cycle of dt) from which a sequence of speeds falling by a dt per cycle still

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // How the simulated controller turns targets into a smooth joint reference for its servo: the
 // reference track (position at the start and end of each 1 ms cycle, velocity, acceleration), the
-// stop ramp used for every stop (error, guard stop, StopMove, end of a non-position motion), and
-// the smooth clamp of auto_limit. Allocation-free.
+// stop ramp used for every stop (error, guard stop, StopMove, end of a non-position motion), the
+// smooth clamp of auto_limit, and the blend that rejoins commands after lost ones. Allocation-free.
 #pragma once
 
 #include <array>
@@ -71,6 +71,35 @@ class SoftLimitClamp {
  private:
   std::array<bool, model::kMaxDof> held_{};
   JointVector previous_target_ = JointVector::Zero();
+};
+
+// Commands that arrive again after lost ones: while they were lost the target ran on along the
+// extrapolation, and the client's commands are somewhere else by then (the plan went on, or the
+// client never saw the loss). Stepping onto them would reach the servo as a jolt. Instead the
+// target keeps an offset (extrapolation - command, position and velocity) that decays as a
+// critically damped second-order system with its acceleration capped. Joint space.
+// docs/simulator_controller.md, "Lost commands".
+struct RejoinBlend {
+  static constexpr double kOmega = 20.0;               // rad/s: the offset is mostly gone after ~0.3 s
+  static constexpr double kAccelerationShare = 0.25;  // of the rated acceleration, at most
+  JointVector offset = JointVector::Zero();
+  JointVector rate = JointVector::Zero();
+  bool active = false;
+
+  void clear() {
+    offset.setZero();
+    rate.setZero();
+    active = false;
+  }
+  // Adds to the offset's position and velocity (the first command after a gap, then the next one).
+  void add(const JointVector& position, const JointVector& velocity) {
+    offset += position;
+    rate += velocity;
+    active = true;
+  }
+  // Advances one cycle, the offset's acceleration within kAccelerationShare of `rated_acceleration`;
+  // clears `active` once the offset is below any tolerance.
+  void step(const JointVector& rated_acceleration, double dt);
 };
 
 }  // namespace xmate::sim

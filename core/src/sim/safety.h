@@ -2,7 +2,7 @@
 // Supervision of the measured motion: collision from the estimated external joint torques, the
 // Cartesian safety box, and the "actual" error bits 0-6. Margins over the command
 // limits, because a measured motion overshoots a little: see the constants below and
-// docs/simulator_controller.md, "Error bits".
+// docs/simulator_controller.md, "Command rules and the error bits".
 #pragma once
 
 #include <Eigen/Core>
