@@ -75,7 +75,7 @@ void Connection::openLocked() {
     rt.controller = controller;
     startRealtimeThread();
     handshake();
-    remembered_.move_armed = false;  // a new session has no motion started
+    updateRemembered([](Remembered& r) { r.move_armed = false; });  // a new session has no motion started
     ever_opened_.store(true);
   } catch (const XmateException&) {
     closeLocked();
@@ -117,7 +117,7 @@ void Connection::startRealtimeThread() {
   rt.wrong_length_count.store(0);
   rt.hold_kind.store(0);
   rt.last_answered_id = 0;
-  rt.latest_base = rt.latest.version();
+  rt.latest_base.store(rt.latest.version());
   try {
     thread_ = std::thread(runRealtimeThread, std::ref(rt));
   } catch (const std::system_error& e) {
@@ -151,7 +151,7 @@ void Connection::stopRealtimeThread() {
 
 void Connection::handshake() {
   protocol::ConnectRequest request;
-  request.udp_port = udp_port_;
+  request.udp_port = udp_port_.load();
   const auto payload = this->request("connect", request, options_.timeouts.connect_ms);
   protocol::ConnectResponse response;
   if (protocol::decodePayload(payload.data(), payload.size(), response) != protocol::DecodeStatus::kOk)
@@ -206,13 +206,15 @@ RCI::robot::RobotState Connection::waitForState() {
     if (net::monotonicNs() > deadline)
       throw UdpException("receiveRobotState: no state from " + ip_ + " for " +
                          std::to_string(options_.timeouts.state_ms) + " ms on UDP port " +
-                         std::to_string(udp_port_) + "; check that no firewall blocks UDP and that the "
+                         std::to_string(udp_port_.load()) + "; check that no firewall blocks UDP and that the "
                          "controller is in RCI mode");
     std::this_thread::sleep_for(std::chrono::microseconds(100));
   }
 }
 
-bool Connection::latestState(RCI::robot::RobotState& out) const { return rt_->latest.load(out) > rt_->latest_base; }
+bool Connection::latestState(RCI::robot::RobotState& out) const {
+  return rt_->latest.load(out) > rt_->latest_base.load();
+}
 
 SessionTiming Connection::timing() const {
   SessionTiming t;

@@ -153,7 +153,7 @@ class Connection {
   // What the real-time thread got (valid once open() returned; empty when closed). Any thread.
   net::RealtimeStatus realtimeStatus() const;
   // The UDP port the states arrive on (0 when closed).
-  uint16_t udpPort() const { return udp_port_; }
+  uint16_t udpPort() const { return udp_port_.load(); }
 
   // ---- Control (one caller at a time) ------------------------------------------------------------
   // Calls the callback once per received state while the controller reports the motion running,
@@ -170,6 +170,8 @@ class Connection {
   ControlResult runControl(const TorqueControl& callback);
 
   // ---- Settings remembered for the API's extensions (Robot::toolFrame(), load(), startMove) ------
+  // Any thread: remembered() returns a copy, updateRemembered(f) calls f(Remembered&) and returns
+  // its result, both under a mutex (Robot calls on several threads set and read them).
   struct Remembered {
     std::array<double, 16> tool{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     double load_mass = 0;
@@ -179,8 +181,15 @@ class Connection {
     RCI::robot::StartMoveRequest::ControllerMode controller_mode{};
     RCI::robot::StartMoveRequest::MotionGeneratorMode motion_mode{};
   };
-  Remembered& remembered() { return remembered_; }
-  const Remembered& remembered() const { return remembered_; }
+  Remembered remembered() const {
+    std::lock_guard lock(remembered_mutex_);
+    return remembered_;
+  }
+  template <class F>
+  auto updateRemembered(F&& f) {
+    std::lock_guard lock(remembered_mutex_);
+    return f(remembered_);
+  }
 
   struct Realtime;  // the real-time thread's state (connection_rt.cpp)
 
@@ -201,7 +210,7 @@ class Connection {
   const XmateType type_;
   const SessionOptions options_;
   TcpSession tcp_;
-  uint16_t udp_port_ = 0;
+  std::atomic<uint16_t> udp_port_{0};    // written with lifecycle_ held; read by any thread
   std::unique_ptr<Realtime> rt_;         // allocated once, reused by every session
   std::unique_ptr<SampleRing> samples_;  // ~2 MB: on the heap, allocated once
   // Open/close/reconnect are serialised by lifecycle_ (held while the session is set up or torn
@@ -213,6 +222,7 @@ class Connection {
   std::atomic<bool> ever_opened_{false};
   mutable std::mutex status_mutex_;      // guards status_ (a copy of what the thread reported)
   net::RealtimeStatus status_;
+  mutable std::mutex remembered_mutex_;  // guards remembered_
   Remembered remembered_;
 };
 

@@ -55,7 +55,7 @@ struct Connection::Realtime {
 
   // ---- Published by the thread (lock-free) --------------------------------------------------------
   net::Seqlock<RCI::robot::RobotState> latest;  // newest in-order state (seqlock: any reader)
-  uint64_t latest_base = 0;                     // latest.version() when the session opened
+  std::atomic<uint64_t> latest_base{0};         // latest.version() when the session opened (caller; any reader)
   net::Seqlock<SessionTiming> timing;           // refreshed every 100 ms (seqlock: any reader)
   std::atomic<uint64_t> wrong_length_count{0};  // datagrams of another size (atomic counter)
   std::atomic<uint64_t> last_wrong_length{0};

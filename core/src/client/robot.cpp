@@ -95,7 +95,7 @@ void Robot::setCoor(const std::array<double, 16>& F_T_EE) {
   m.flange_to_tool = F_T_EE;
   requireSetterSuccess("setCoor", connection_->request("setCoor", m, responseMs(*connection_)),
                        " (the tool cannot change during a motion)");
-  connection_->remembered().tool = F_T_EE;
+  connection_->updateRemembered([&](client::Connection::Remembered& r) { r.tool = F_T_EE; });
 }
 
 void Robot::setLoad(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia) {
@@ -107,10 +107,11 @@ void Robot::setLoad(double mass, const std::array<double, 3>& center, const std:
   m.inertia = inertia;
   requireSetterSuccess("setLoad", connection_->request("setLoad", m, responseMs(*connection_)),
                        " (the load cannot change during a motion)");
-  auto& r = connection_->remembered();
-  r.load_mass = mass;
-  r.load_center = center;
-  r.load_inertia = inertia;
+  connection_->updateRemembered([&](client::Connection::Remembered& r) {
+    r.load_mass = mass;
+    r.load_center = center;
+    r.load_inertia = inertia;
+  });
 }
 
 void Robot::setFilters(double joint_hz, double cartesian_hz, double torque_hz) {
@@ -220,7 +221,7 @@ void Robot::rebootRobot() {
                                                            motionResponseMs(*connection_)));
   // The controller drops the session and comes back with its defaults: so do we.
   connection_->close();
-  connection_->remembered() = client::Connection::Remembered{};
+  connection_->updateRemembered([](client::Connection::Remembered& r) { r = {}; });
 }
 
 int Robot::getSafetyStopState() {
@@ -242,7 +243,7 @@ XmateType Robot::type() const { return connection_->type(); }
 std::array<double, 16> Robot::toolFrame() const { return connection_->remembered().tool; }
 
 void Robot::load(double& mass, std::array<double, 3>& center, std::array<double, 9>& inertia) const {
-  const auto& r = connection_->remembered();
+  const auto r = connection_->remembered();
   mass = r.load_mass;
   center = r.load_center;
   inertia = r.load_inertia;

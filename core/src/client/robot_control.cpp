@@ -113,15 +113,16 @@ void Robot::startMove(CM controller_mode, MM motion_mode) {
     connection_->endMotionHold();
     throw;
   }
-  auto& r = connection_->remembered();
-  r.move_armed = true;
-  r.controller_mode = controller_mode;
-  r.motion_mode = motion_mode;
+  connection_->updateRemembered([&](client::Connection::Remembered& r) {
+    r.move_armed = true;
+    r.controller_mode = controller_mode;
+    r.motion_mode = motion_mode;
+  });
 }
 
 void Robot::stopMove() {
   connection_->ensureOpen();
-  connection_->remembered().move_armed = false;
+  connection_->updateRemembered([](client::Connection::Remembered& r) { r.move_armed = false; });
   connection_->endMotionHold();
   client::requireStopMoveSuccess(connection_->request(
       "stopMove", protocol::EmptyRequest{protocol::Command::kStopMove},
@@ -188,7 +189,7 @@ template <class Callback>
 void control(Robot& robot, client::Connection& connection, ControlKind kind, const Callback& callback) {
   const std::string call = std::string("Control(") + client::toString(kind) + ")";
   if (!callback) throw std::invalid_argument(call + ": the callback is empty");
-  auto& remembered = connection.remembered();
+  const auto remembered = connection.remembered();  // a copy: other threads may start or stop moves
   ControlKind armed_kind;
   if (!remembered.move_armed)
     throw InvalidOperationException(call + ": no motion was started; call " + pairFor(kind) + " first");
@@ -197,7 +198,8 @@ void control(Robot& robot, client::Connection& connection, ControlKind kind, con
                                     motionModeName(remembered.motion_mode) + ") does not drive a " +
                                     client::toString(kind) + " callback; call " + pairFor(kind) + " first");
   connection.ensureOpen();
-  remembered.move_armed = false;  // one Control() per startMove()
+  // One Control() per startMove().
+  connection.updateRemembered([](client::Connection::Remembered& r) { r.move_armed = false; });
   const client::ControlResult result = connection.runControl(callback);
   if (result.outcome != ControlOutcome::kFinished) raise(robot, result);
 }

@@ -12,7 +12,9 @@ void TcpSession::open(const net::Endpoint& controller, int timeout_ms) {
   std::lock_guard lock(mutex_);
   controller_ = controller;
   try {
-    connection_ = net::TcpConnection::connect(controller, timeout_ms);
+    net::TcpConnection connected = net::TcpConnection::connect(controller, timeout_ms);
+    std::lock_guard fd_lock(fd_mutex_);
+    connection_ = std::move(connected);
   } catch (const std::exception& e) {
     throw TcpException(std::string("connect: ") + e.what() +
                        "; check the controller's IP address and port and that it is in RCI mode");
@@ -21,19 +23,30 @@ void TcpSession::open(const net::Endpoint& controller, int timeout_ms) {
 }
 
 void TcpSession::close() {
-  connection_.shutdown();  // wakes a reader blocked in exchange() on another thread
+  {
+    std::lock_guard fd_lock(fd_mutex_);
+    connection_.shutdown();  // wakes a reader blocked in exchange() on another thread
+  }
   std::lock_guard lock(mutex_);
-  connection_.close();
+  closeConnection();
   open_.store(false, std::memory_order_release);
 }
 
-net::Endpoint TcpSession::local() const { return connection_.local(); }
+void TcpSession::closeConnection() {
+  std::lock_guard fd_lock(fd_mutex_);
+  connection_.close();
+}
+
+net::Endpoint TcpSession::local() const {
+  std::lock_guard fd_lock(fd_mutex_);
+  return connection_.local();
+}
 
 void TcpSession::fail(const char* call, const char* what, net::IoResult result, int timeout_ms, bool mid_frame) {
   std::string message = std::string(call) + ": " + what + " " + controller_.toString() + ": ";
   if (result == net::IoResult::kTimeout && mid_frame) {
     // Part of a frame was read: every later answer would be read from the middle of this one.
-    connection_.close();
+    closeConnection();
     open_.store(false, std::memory_order_release);
     throw TcpException(message + "the response stopped in the middle of a frame for " + std::to_string(timeout_ms) +
                        " ms; the session is closed because the rest of the stream cannot be trusted: "
@@ -44,7 +57,7 @@ void TcpSession::fail(const char* call, const char* what, net::IoResult result, 
     throw TcpException(message + "no response within " + std::to_string(timeout_ms) +
                        " ms; check the IP and port and that the controller is in RCI mode");
   }
-  connection_.close();
+  closeConnection();
   open_.store(false, std::memory_order_release);
   if (result == net::IoResult::kClosed)  // someone answered at this address: the IP and port are right
     throw TcpException(message +

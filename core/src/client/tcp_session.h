@@ -37,8 +37,14 @@ class TcpSession {
   // byte of the frame read (mid_frame false), after which the stream is still aligned.
   [[noreturn]] void fail(const char* call, const char* what, net::IoResult result, int timeout_ms,
                          bool mid_frame = false);
+  // Closes the descriptor; with mutex_ held.
+  void closeConnection();
 
   std::mutex mutex_;  // one request/response at a time (callers may be on several threads)
+  // The descriptor changes (connect, close) with both mutexes held, in this order; close()'s
+  // shutdown and local() need only fd_mutex_, so they never wait for a request in progress and
+  // never see a descriptor that is being closed (or already reused by another socket).
+  mutable std::mutex fd_mutex_;
   net::TcpConnection connection_;
   net::Endpoint controller_;
   uint32_t sequence_ = 0;
