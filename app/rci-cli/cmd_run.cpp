@@ -53,6 +53,10 @@ void printDone(const Program& program, size_t i, const InstructionReport& r) {
     std::printf("  TCP (%.4f, %.4f, %.4f) m  max tracking error %.2e rad / %.3f mm", r.pose[3], r.pose[7],
                 r.pose[11], r.max_joint_error, r.max_tcp_error * 1000);
   std::printf("\n");
+  if (isMotion(in.type) && !r.settled)
+    std::printf("        not at rest 1 s after the motion (joint error %.2e rad): check the payload and the "
+                "joint impedance\n",
+                r.settle_error);
   if (!r.message.empty() && r.status != InstructionStatus::kDone) std::printf("        %s\n", r.message.c_str());
   std::fflush(stdout);
 }

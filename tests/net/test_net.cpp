@@ -6,7 +6,11 @@
 #include <atomic>
 #include <thread>
 
+#include <fstream>
+#include <string>
+#include <vector>
 #include "net/cycle_stats.h"
+#include "net/realtime.h"
 #include "net/seqlock.h"
 #include "net/spsc_ring.h"
 #include "net/tcp_socket.h"
@@ -14,10 +18,36 @@
 
 using namespace xmate::net;
 
+namespace {
+
+// VmLck of this process, kB (-1 if unreadable).
+long lockedKb() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmLck:", 0) == 0) return std::stol(line.substr(6));
+  return -1;
+}
+
+}  // namespace
+
 class TestNet : public QObject {
   Q_OBJECT
 
  private slots:
+  // The real-time thread locks its stack and the regions it names, not the whole process: memory
+  // allocated afterwards by anyone (a window's scenes, plots) stays pageable.
+  void realtimeLocksOnlyTheThreadsMemory() {
+    const long before = lockedKb();
+    std::vector<unsigned char> region(1 << 20, 1);
+    RealtimeStatus status;
+    std::thread([&] { status = enableRealtimeForThisThread(10, {{region.data(), region.size()}}); }).join();
+    if (!status.memory_locked) QSKIP(qPrintable("memory locking not granted here: " + QString::fromStdString(status.reason)));
+    const long locked = lockedKb() - before;
+    QVERIFY2(locked >= 1024 && locked < 4096, qPrintable(QString::number(locked) + " kB locked"));
+    std::vector<unsigned char> later(32 << 20, 1);  // touched: resident
+    QVERIFY2(lockedKb() - before < 4096, qPrintable(QString::number(lockedKb() - before) + " kB locked after 32 MB"));
+  }
+
   void ringKeepsOrderAndCountsDrops() {
     SpscRing<int, 4> ring;
     for (int i = 0; i < 4; ++i) QVERIFY(ring.push(i));

@@ -100,9 +100,12 @@ class TestProgramGui : public QObject {
     session_->simulator()->setExternalWrench({0, 0, 0, 0, 0, 0});
     QTRY_VERIFY_WITH_TIMEOUT(atRest(), kWaitMs);
   }
+  // The run ended and the arm came to rest (a run ends once the arm is within 5e-5 rad of its last
+  // command and slower than 2e-3 rad/s; the checks here are finer).
   void waitRunEnd() {
     QTRY_VERIFY_WITH_TIMEOUT(!panel_->isRunning(), 3 * kWaitMs);
     QTRY_VERIFY_WITH_TIMEOUT(!session_->live().motion_running, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(atRest(), kWaitMs);
   }
   // Writes a program file directly (the file format is core's; the panel opens it as a user would).
   QString writeProgram(const QString& name, const xmate::teach::Program& program) {
@@ -143,6 +146,7 @@ class TestProgramGui : public QObject {
   void diTriggerRecords();
   void listEditing();
   void unsavedChangesPrompt();
+  void anotherToolRefusesTeaching();
 };
 
 void TestProgramGui::initTestCase() {
@@ -243,7 +247,8 @@ void TestProgramGui::teachSaveReopenReplay() {
   QVERIFY(text(QStringLiteral("program.file")).contains(QStringLiteral("modified")));
   // The 3D view gets the waypoints (J, L, via, target) and a planned path.
   QCOMPARE(int(session_->programOverlay().waypoints.size()), 4);
-  QVERIFY(!session_->programOverlay().path.empty());
+  // The path comes from the pre-flight trace, which runs on a worker thread.
+  QTRY_VERIFY_WITH_TIMEOUT(!panel_->isTracing() && !session_->programOverlay().path.empty(), kWaitMs);
   QCOMPARE(session_->programOverlay().selected, 3);
   QCOMPARE(find<QListWidget>(QStringLiteral("program.problems"))->count(), 0);
   click(QStringLiteral("drag.stop"));
@@ -331,6 +336,7 @@ void TestProgramGui::unreachableTargetRefusedBeforeMoving() {
   program.instructions.push_back(xmate::teach::moveJ(here, 0.3, "here"));
   program.instructions.push_back(xmate::teach::moveL(far, 0.3, "far"));
   openThroughButton(writeProgram(QStringLiteral("unreachable.json"), program));
+  QTRY_VERIFY_WITH_TIMEOUT(atRest(), kWaitMs);
   const auto q_before = state().q;
   click(QStringLiteral("program.run"));
   waitRunEnd();
@@ -500,6 +506,43 @@ void TestProgramGui::unsavedChangesPrompt() {
   QCOMPARE(rows(), rows_before);
   QVERIFY2(text(QStringLiteral("program.status")).contains(QStringLiteral("instruction 1")),
            qPrintable(text(QStringLiteral("program.status"))));
+}
+
+// The first pose taught records the robot's tool in the program; with another tool on the robot,
+// recording is refused (saying what to do in this window) and the pre-flight reports the program's
+// poses; with the program's tool back, teaching goes on.
+void TestProgramGui::anotherToolRefusesTeaching() {
+  unsaved_choice_ = ProgramPanel::UnsavedChoice::kDiscard;
+  click(QStringLiteral("program.new"));
+  QCOMPARE(rows(), 0);
+  QVERIFY(!panel_->program().has_tool);
+  setRecordType(1);  // MOVEL: its pose depends on the tool
+  click(QStringLiteral("program.record"));
+  QCOMPARE(rows(), 1);
+  QVERIFY(panel_->program().has_tool);
+  QCOMPARE(panel_->program().tool, session_->robot()->toolFrame());
+
+  auto setToolZ = [this](double z) {
+    find<QDoubleSpinBox>(QStringLiteral("tool.z"))->setValue(z);
+    click(QStringLiteral("tool.apply"));
+    QTRY_COMPARE_WITH_TIMEOUT(session_->robot()->toolFrame()[11], z, kWaitMs);
+  };
+  setToolZ(0.1);
+  QTRY_VERIFY_WITH_TIMEOUT(find<QListWidget>(QStringLiteral("program.problems"))->count() == 1, kWaitMs);
+  const QString problem = find<QListWidget>(QStringLiteral("program.problems"))->item(0)->text();
+  QVERIFY2(problem.contains(QStringLiteral("100.0 mm")) && problem.contains(QStringLiteral("Tool & payload panel")),
+           qPrintable(problem));
+  click(QStringLiteral("program.record"));
+  QCOMPARE(rows(), 1);  // refused
+  const QString status = text(QStringLiteral("program.status"));
+  QVERIFY2(status.startsWith(QStringLiteral("Record: the robot's TCP is 100.0 mm")) &&
+               status.contains(QStringLiteral("press New in the Program panel")),
+           qPrintable(status));
+
+  setToolZ(0);
+  QTRY_VERIFY_WITH_TIMEOUT(find<QListWidget>(QStringLiteral("program.problems"))->count() == 0, kWaitMs);
+  click(QStringLiteral("program.record"));
+  QCOMPARE(rows(), 2);
 }
 
 QTEST_MAIN(TestProgramGui)

@@ -67,6 +67,8 @@ class TestPreflight : public QObject {
   void softLimits();
   void invalidFieldsOfAProgramBuiltInMemory();
   void timeScalingRampsWithinItsBounds();
+  void toolOfTheProgramMustMatchTheRobot();
+  void firstRecordingAdoptsTheRobotsTool();
 };
 
 void TestPreflight::cleanProgramPassesWithAPreview() {
@@ -227,6 +229,104 @@ void TestPreflight::timeScalingRampsWithinItsBounds() {
   }
   QVERIFY(highest <= 0.4 + 1e-12);
   QCOMPARE(k.value(), 0.1);
+}
+
+
+namespace {
+
+// A 4x4 row-major tool: `dz` m along the flange's z axis, turned `rz` rad about it.
+std::array<double, 16> toolAt(double dz, double rz = 0) {
+  const double c = std::cos(rz), s = std::sin(rz);
+  return {c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, dz, 0, 0, 0, 1};
+}
+
+// The measured TCP at q with `tool` on the flange.
+std::array<double, 16> tcpWith(const std::array<double, 16>& tool, const std::array<double, 7>& q) {
+  XmateModel model(XMATE7_PRO);
+  model.SetCoor(tool);
+  return model.GetCartPose(q);
+}
+
+}  // namespace
+
+void TestPreflight::toolOfTheProgramMustMatchTheRobot() {
+  Program p;
+  p.has_tool = true;
+  p.tool = toolAt(0.1);
+  p.instructions.push_back(moveJ(targetAt({0.2, 0.4, 0.1, 1.3, 0.0, 1.3, 0.2}), 0.5, "by joints"));
+  XmateModel with_tool(XMATE7_PRO);
+  with_tool.SetCoor(p.tool);
+  Target here;
+  here.has_pose = true;
+  here.pose = with_tool.GetCartPose(kStart);
+  p.instructions.push_back(moveL(here, 0.3, "line"));
+  p.instructions.push_back(moveL(here, 0.3, "line again"));
+  TraceOptions o = fromStart();
+  o.has_tcp = true;
+
+  o.tcp = tcpWith(p.tool, kStart);  // the robot carries the program's tool
+  QVERIFY2(preflight(p, o).empty(), qPrintable(allMessages(preflight(p, o))));
+  o.tcp = tcpWith(toolAt(0.1005, 0.005), kStart);  // within 1 mm and 0.5 deg
+  QVERIFY2(preflight(p, o).empty(), qPrintable(allMessages(preflight(p, o))));
+
+  o.tcp = tcpWith(toolAt(0.2), kStart);  // another tool: 100 mm longer
+  std::vector<Problem> problems = preflight(p, o);
+  QCOMPARE(problems.size(), size_t(1));  // once, at the first instruction that uses the tool
+  QCOMPARE(problems[0].instruction, size_t(1));
+  QVERIFY2(problems[0].message.find("instruction 2 (MOVEL") == 0, problems[0].message.c_str());
+  QVERIFY2(problems[0].message.find("100.0 mm") != std::string::npos, problems[0].message.c_str());
+  QVERIFY2(problems[0].message.find("(0.0000, 0.0000, 0.1000) m") != std::string::npos, problems[0].message.c_str());
+  o.tcp = tcpWith(toolAt(0.1, 0.02), kStart);  // turned 1.1 deg
+  problems = preflight(p, o);
+  QCOMPARE(problems.size(), size_t(1));
+  QVERIFY2(problems[0].message.find("1.1 deg away") != std::string::npos, problems[0].message.c_str());
+
+  // A program without a recorded tool, or one that moves by joints only, needs no check.
+  Program joints_only = p;
+  joints_only.instructions.resize(1);
+  QVERIFY(preflight(joints_only, o).empty());
+  Program untooled = p;
+  untooled.has_tool = false;
+  untooled.tool = kIdentityPose;
+  o.tool = p.tool;  // the pre-flight then takes the robot's tool
+  QVERIFY2(preflight(untooled, o).empty(), qPrintable(allMessages(preflight(untooled, o))));
+}
+
+void TestPreflight::firstRecordingAdoptsTheRobotsTool() {
+  RCI::robot::RobotState state{};
+  state.q = kStart;
+  const Payload load{0.8, {0, 0, 0.05}, {0.002, 0, 0, 0, 0.002, 0, 0, 0, 0.001}};
+
+  // The first pose of an empty program: the robot's tool and load become the program's.
+  Program p;
+  state.toolTobase_pos_m = tcpWith(toolAt(0.12), kStart);
+  QCOMPARE(adoptTool(p, state, toolAt(0.12), load), std::string());
+  QVERIFY(p.has_tool);
+  QCOMPARE(p.tool, toolAt(0.12));
+  QCOMPARE(p.load.mass, 0.8);
+  QCOMPARE(p.load.center, load.center);
+  p.instructions.push_back(moveJ(targetFromState(state, XMATE7_PRO), 0.5));
+
+  // Later poses with the same tool are fine; with another one they are refused, the program kept.
+  QCOMPARE(adoptTool(p, state, toolAt(0.12), load), std::string());
+  state.toolTobase_pos_m = tcpWith(toolAt(0.05), kStart);
+  const std::string refused = adoptTool(p, state, toolAt(0.05), Payload{});
+  QVERIFY2(refused.find("70.0 mm") != std::string::npos, refused.c_str());
+  QCOMPARE(p.tool, toolAt(0.12));
+  QCOMPARE(p.load.mass, 0.8);
+
+  // A tool the client did not set (the pendant, another program): taken from the measured TCP.
+  Program fresh;
+  const std::string none = adoptTool(fresh, state, kIdentityPose, Payload{});
+  QVERIFY2(none.empty(), none.c_str());
+  QVERIFY(fresh.has_tool);
+  for (size_t i = 0; i < 16; ++i) QVERIFY2(std::abs(fresh.tool[i] - toolAt(0.05)[i]) < 1e-9, qPrintable(QString::number(i)));
+
+  // A program taught before tools were recorded stays without one.
+  Program old;
+  old.instructions.push_back(moveJ(targetFromState(state, XMATE7_PRO), 0.5));
+  QCOMPARE(adoptTool(old, state, toolAt(0.05), load), std::string());
+  QVERIFY(!old.has_tool);
 }
 
 int runPreflightTests(int argc, char** argv) {

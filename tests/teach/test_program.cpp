@@ -65,6 +65,9 @@ bool sameTarget(const Target& a, const Target& b) {
 
 bool sameProgram(const Program& a, const Program& b) {
   if (a.robot != b.robot || a.instructions.size() != b.instructions.size()) return false;
+  if (a.has_tool != b.has_tool || a.tool != b.tool || a.load.mass != b.load.mass || a.load.center != b.load.center ||
+      a.load.inertia != b.load.inertia)
+    return false;
   for (size_t i = 0; i < a.instructions.size(); ++i) {
     const Instruction &x = a.instructions[i], &y = b.instructions[i];
     if (x.type != y.type || x.name != y.name) return false;
@@ -115,6 +118,7 @@ class TestProgram : public QObject {
   void programJsonErrorsSayWhatAndWhere();
   void savedTextKeepsItsLayout();
   void programRoundTripsThroughAFile();
+  void toolAndLoadRoundTrip();
   void exampleProgramLoads();
   void badFieldsAreNamed_data();
   void badFieldsAreNamed();
@@ -252,7 +256,7 @@ void TestProgram::savedTextKeepsItsLayout() {
   p.instructions.back().target.q = {0, -0.5, 1e-7, 1.5, 0, 2, 0};
   QCOMPARE(QString::fromStdString(programText(p)), QString::fromUtf8(R"({
   "format": "rci-program",
-  "version": 1,
+  "version": 2,
   "robot": "xmate3",
   "instructions": [
     {
@@ -282,12 +286,30 @@ void TestProgram::programRoundTripsThroughAFile() {
   // The text is the documented format.
   const QString text = QString::fromStdString(readFile(path));
   QVERIFY(text.contains("\"format\": \"rci-program\""));
-  QVERIFY(text.contains("\"version\": 1"));
+  QVERIFY(text.contains("\"version\": 2"));
   QVERIFY(text.contains("\"robot\": \"xmate7_pro\""));
   QVERIFY(text.contains("\"signal\": \"DO0_1\""));
   QVERIFY(text.contains("\"signal\": \"DI1_1\""));
   // Saving what was loaded gives the same text.
   QCOMPARE(programText(back), programText(p));
+}
+
+// Version 2 records the tool and load the program was taught with; version 1 files still load,
+// without them, and are saved as version 2.
+void TestProgram::toolAndLoadRoundTrip() {
+  Program p = sampleProgram();
+  p.has_tool = true;
+  p.tool = {0, -1, 0, 0.01, 1, 0, 0, 0, 0, 0, 1, 0.12, 0, 0, 0, 1};
+  p.load.mass = 1.5;
+  p.load.center = {0, 0.01, 0.05};
+  p.load.inertia = {0.01, 0, 0, 0, 0.01, 0, 0, 0, 0.02};
+  const Program back = parseProgram(programText(p));
+  QVERIFY(sameProgram(p, back));
+  QVERIFY(QString::fromStdString(programText(p)).contains("\"tool\": [0, -1, 0, 0.01, 1, 0, 0, 0, 0, 0, 1, 0.12, 0, 0, 0, 1]"));
+  const Program old = parseProgram(withInstruction(""));
+  QVERIFY(!old.has_tool);
+  QVERIFY(QString::fromStdString(programText(old)).contains("\"version\": 2"));
+  QVERIFY(!QString::fromStdString(programText(old)).contains("\"tool\""));
 }
 
 void TestProgram::exampleProgramLoads() {
@@ -307,8 +329,25 @@ void TestProgram::badFieldsAreNamed_data() {
   row("not json", "{\"format\": ", "not valid JSON: line 1, column 12");
   row("unknown format", R"({"format": "other", "version": 1, "robot": "xmate7_pro", "instructions": []})",
       "field \"format\": expected \"rci-program\"");
-  row("unknown version", R"({"format": "rci-program", "version": 2, "robot": "xmate7_pro", "instructions": []})",
-      "field \"version\": unsupported version");
+  row("unknown version", R"({"format": "rci-program", "version": 3, "robot": "xmate7_pro", "instructions": []})",
+      "field \"version\": unsupported version 3 (this RCI Studio reads versions 1 to 2)");
+  const std::string identity = "[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0.1, 0, 0, 0, 1]";
+  const std::string load = R"({"mass": 1.5, "center": [0, 0, 0.05], "inertia": [0, 0, 0, 0, 0, 0, 0, 0, 0]})";
+  row("tool in version 1",
+      R"({"format": "rci-program", "version": 1, "robot": "xmate7_pro", "tool": )" + identity +
+          R"(, "load": )" + load + R"(, "instructions": []})",
+      "field \"tool\": unknown member");
+  row("tool without load",
+      R"({"format": "rci-program", "version": 2, "robot": "xmate7_pro", "tool": )" + identity + R"(, "instructions": []})",
+      "field \"load\": missing (a program records its tool and its load together)");
+  row("tool not rigid",
+      R"({"format": "rci-program", "version": 2, "robot": "xmate7_pro", "tool": [2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], "load": )" +
+          load + R"(, "instructions": []})",
+      "field \"tool\": not a homogeneous transform");
+  row("negative mass",
+      R"({"format": "rci-program", "version": 2, "robot": "xmate7_pro", "tool": )" + identity +
+          R"(, "load": {"mass": -1, "center": [0, 0, 0], "inertia": [0, 0, 0, 0, 0, 0, 0, 0, 0]}, "instructions": []})",
+      "field \"load.mass\": expected a mass in kg, 0 or more");
   row("unknown robot", withInstruction("", "xmate9"), "field \"robot\": unknown model \"xmate9\"");
   row("unknown type", withInstruction(R"({"type": "JUMP"})"), "instruction 1, field \"type\": unknown instruction type \"JUMP\"");
   row("type not string", withInstruction(R"({"type": 3})"), "instruction 1, field \"type\": expected a string, got a number");

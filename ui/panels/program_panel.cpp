@@ -30,7 +30,9 @@
 #include "panels/program_model.h"
 #include "session/session.h"
 #include "teach/program_io.h"
+#include "teach/preflight.h"
 #include "teach/recording.h"
+#include "text/operator_text.h"
 
 namespace rci::ui {
 
@@ -486,6 +488,7 @@ void ProgramPanel::record() {
     empty.robot = type;
     model_->setProgram(empty);
   }
+  if (!teachWithRobotTool(tr("Record"))) return;
   const xmate::teach::Target target = xmate::teach::targetFromState(session().live().state, type);
   const int kind = record_type_->currentData().toInt();
   if (kind == kRecordC && !have_via_) {
@@ -509,6 +512,23 @@ void ProgramPanel::record() {
            .arg(QString::fromStdString(name), QLatin1String(xmate::teach::typeName(in.type)))
            .arg(row + 1),
        false);
+}
+
+bool ProgramPanel::teachWithRobotTool(const QString& action) {
+  xmate::teach::Program adopted = program();
+  xmate::teach::Payload load;
+  std::array<double, 16> tool = xmate::teach::kIdentityPose;
+  if (auto* robot = session().robot()) {
+    tool = robot->toolFrame();
+    robot->load(load.mass, load.center, load.inertia);
+  }
+  const std::string problem = xmate::teach::adoptTool(adopted, session().live().state, tool, load);
+  if (!problem.empty()) {
+    note(action + QStringLiteral(": ") + text::programProblem(problem), true);
+    return false;
+  }
+  if (adopted.has_tool != program().has_tool) model_->setProgram(adopted);  // the first pose: its tool
+  return true;
 }
 
 void ProgramPanel::note(const QString& text, bool error, const QString& path) {
@@ -604,6 +624,7 @@ void ProgramPanel::showSelectedLogic() {
 void ProgramPanel::touchUp(bool via) {
   const int row = selectedRow();
   if (row < 0 || !haveLiveState() || running_) return;
+  if (!teachWithRobotTool(via ? tr("Touch up via") : tr("Touch up"))) return;
   const xmate::teach::Target pose = xmate::teach::targetFromState(session().live().state, program().robot);
   if (via) {
     if (!model_->replaceVia(row, pose)) {

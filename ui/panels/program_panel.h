@@ -5,6 +5,7 @@
 // save program files, and show the waypoints and the planned path in the 3D view (programOverlay).
 #pragma once
 
+#include <QFutureWatcher>
 #include <QString>
 
 #include <array>
@@ -12,7 +13,9 @@
 #include <memory>
 
 #include "panels/panel_base.h"
+#include "session/session.h"
 #include "teach/executor.h"
+#include "teach/preflight.h"
 #include "teach/program.h"
 
 class QAction;
@@ -62,6 +65,8 @@ class ProgramPanel : public PanelBase {
   // The report of the last run or go-to (outcome kIdle before the first).
   const xmate::teach::RunReport& lastReport() const { return last_report_; }
   bool isRunning() const { return running_; }
+  // True while the pre-flight behind the planned path and the problem list runs on its worker.
+  bool isTracing() const;
 
  protected:
   void refresh(const LiveState& live) override;
@@ -86,6 +91,9 @@ class ProgramPanel : public PanelBase {
 
   // Teaching and editing (program_panel.cpp).
   void record();
+  // Before a pose is taught: the first one records the robot's tool and load in the program; later
+  // ones need the robot's TCP to match it. False (and the reason shown) when it does not.
+  bool teachWithRobotTool(const QString& action);
   void cancelPendingVia();
   // Shows text in the status line and writes it to the event log (Messages dock), the file's full
   // path as the detail: what was taught, opened and saved is on record.
@@ -127,10 +135,25 @@ class ProgramPanel : public PanelBase {
   void showProblems(const std::vector<xmate::teach::Problem>& problems);
   void updateProgress();
   void resetRunDisplay();  // after New / Open: no run of this program yet
+  // The overlay's waypoints at once; its planned path and the pre-flight problems from a trace on a
+  // worker thread (it plans every motion, too slow for the GUI thread at every edit). One trace at a
+  // time: a request while one runs traces the newest program and pose after it.
   void updateOverlay();
+  void startTrace();
+  void traceFinished();
+  // Each tick: traces again when the arm rests away from where the last trace started, or its
+  // measured TCP moved there (another tool set).
+  void followRobot(const LiveState& live);
   std::array<double, 7> currentQ() const;
 
   ProgramModel* model_ = nullptr;
+  ProgramOverlay overlay_;  // what the 3D view shows of the program
+  QFutureWatcher<xmate::teach::ProgramTrace>* trace_watcher_ = nullptr;
+  bool trace_again_ = false;
+  // Where the last trace started (joints, measured TCP): the trace follows the robot once it rests
+  // somewhere else or its tool changes (followRobot).
+  std::array<double, 7> traced_q_{};
+  std::array<double, 16> traced_tcp_{};
   QString path_;
   bool modified_ = false;
   Dialogs dialogs_;

@@ -10,8 +10,10 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QTableView>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include <xmate/model.h>
@@ -128,6 +130,10 @@ xmate::teach::TraceOptions ProgramPanel::traceOptions() const {
   xmate::teach::TraceOptions options;
   options.q_start = currentQ();
   if (auto* robot = session().robot()) options.tool = robot->toolFrame();
+  if (haveLiveState()) {  // the measured TCP, for the check of the program's tool
+    options.has_tcp = true;
+    options.tcp = session().live().state.toolTobase_pos_m;
+  }
   options.has_soft_limits = e.has_soft_limits;
   options.soft_lower = e.soft_lower;
   options.soft_upper = e.soft_upper;
@@ -245,6 +251,7 @@ void ProgramPanel::updateProgress() {
 void ProgramPanel::refresh(const LiveState& live) {
   updateProgress();
   updateButtons();
+  followRobot(live);
   const int di = di_trigger_->currentData().toInt();
   if (di < 0 || di >= int(live.digital_in.size())) return;
   const bool level = live.digital_in[size_t(di)];
@@ -279,36 +286,89 @@ void ProgramPanel::sessionClosed() {
 
 void ProgramPanel::updateOverlay() {
   const auto& p = program();
-  ProgramOverlay overlay;
   const xmate::teach::TraceOptions options = traceOptions();
   std::optional<xmate::XmateModel> model;  // for targets taught as joints only
   auto position = [&](const xmate::teach::Target& t) -> std::array<double, 3> {
     if (t.has_pose) return {t.pose[3], t.pose[7], t.pose[11]};
     if (!model) {
       model.emplace(p.robot);
-      model->SetCoor(options.tool);
+      model->SetCoor(p.has_tool ? p.tool : options.tool);
     }
     const auto pose = model->GetCartPose(t.q);
     return {pose[3], pose[7], pose[11]};
   };
+  overlay_.waypoints.clear();
+  overlay_.labels.clear();
+  overlay_.selected = -1;
   const int selected = selectedRow();
   for (size_t i = 0; i < p.instructions.size(); ++i) {
     const auto& in = p.instructions[i];
     if (!xmate::teach::isMotion(in.type)) continue;
     const QString name = in.name.empty() ? QStringLiteral("#%1").arg(i + 1) : QString::fromStdString(in.name);
     if (in.type == xmate::teach::InstructionType::kMoveC) {
-      overlay.waypoints.push_back(position(in.via));
-      overlay.labels.push_back(name + tr(" via"));
+      overlay_.waypoints.push_back(position(in.via));
+      overlay_.labels.push_back(name + tr(" via"));
     }
-    if (int(i) == selected) overlay.selected = int(overlay.waypoints.size());
-    overlay.waypoints.push_back(position(in.target));
-    overlay.labels.push_back(name);
+    if (int(i) == selected) overlay_.selected = int(overlay_.waypoints.size());
+    overlay_.waypoints.push_back(position(in.target));
+    overlay_.labels.push_back(name);
   }
-  // The planned path and the pre-flight start where the robot is: only with its state.
-  xmate::teach::ProgramTrace trace;
-  if (haveLiveState()) trace = xmate::teach::traceProgram(p, options);
-  for (const auto& t : trace.instructions) overlay.path.insert(overlay.path.end(), t.tcp_path.begin(), t.tcp_path.end());
-  session().setProgramOverlay(overlay);
+  // The planned path and the pre-flight start where the robot is: only with its state. Until the
+  // trace is back the view keeps the previous path.
+  if (!haveLiveState()) {
+    overlay_.path.clear();
+    trace_again_ = false;  // a trace still running is for a state that is gone
+    if (!running_) showProblems({});
+  } else {
+    startTrace();
+  }
+  session().setProgramOverlay(overlay_);
+}
+
+bool ProgramPanel::isTracing() const { return trace_watcher_ && trace_watcher_->isRunning(); }
+
+void ProgramPanel::startTrace() {
+  if (!trace_watcher_) {
+    trace_watcher_ = new QFutureWatcher<xmate::teach::ProgramTrace>(this);
+    connect(trace_watcher_, &QFutureWatcherBase::finished, this, &ProgramPanel::traceFinished);
+  }
+  if (trace_watcher_->isRunning()) {
+    trace_again_ = true;
+    return;
+  }
+  trace_again_ = false;
+  const xmate::teach::TraceOptions options = traceOptions();
+  traced_q_ = options.q_start;
+  traced_tcp_ = options.tcp;
+  // The worker gets copies: the panel may change the program, or go away, meanwhile.
+  trace_watcher_->setFuture(QtConcurrent::run(
+      [program = program(), options] { return xmate::teach::traceProgram(program, options); }));
+}
+
+void ProgramPanel::followRobot(const LiveState& live) {
+  constexpr double kMoved = 1e-4;     // rad, m: far below what the preview or a problem shows
+  constexpr double kResting = 0.01;   // rad/s: trace where the arm stopped, not along a drag
+  if (!live.has_state || running_ || model_->count() == 0 || isTracing()) return;
+  const auto& s = live.state;
+  double moved = 0, speed = 0;
+  for (size_t i = 0; i < 7; ++i) {
+    moved = std::max(moved, std::abs(s.q[i] - traced_q_[i]));
+    speed = std::max(speed, std::abs(s.dq_m[i]));
+  }
+  for (size_t i = 0; i < 12; ++i) moved = std::max(moved, std::abs(s.toolTobase_pos_m[i] - traced_tcp_[i]));
+  if (moved > kMoved && speed < kResting) updateOverlay();
+}
+
+void ProgramPanel::traceFinished() {
+  if (trace_again_) {  // the program or the pose changed while it ran: that result is stale
+    startTrace();
+    return;
+  }
+  if (!haveLiveState()) return;
+  const xmate::teach::ProgramTrace trace = trace_watcher_->result();
+  overlay_.path.clear();
+  for (const auto& t : trace.instructions) overlay_.path.insert(overlay_.path.end(), t.tcp_path.begin(), t.tcp_path.end());
+  session().setProgramOverlay(overlay_);
   if (!running_) showProblems(trace.problems);
 }
 

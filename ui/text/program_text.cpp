@@ -22,6 +22,9 @@ QString programProblem(const std::string& raw) {
   plain.replace(QStringLiteral("re-teach the target or reach it with MOVEJ"),
                 tr("re-teach the target (Touch up) or make it a joint move (type J)"));
   plain.replace(QStringLiteral("re-teach the waypoint"), tr("re-teach the waypoint (Touch up)"));
+  plain.replace(QStringLiteral("set the tool and load the program was taught with, or teach the program again with this tool"),
+                tr("enter that tool in the Tool & payload panel and press Apply, or press New in the Program "
+                   "panel and teach the program again with this tool"));
   return plain;
 }
 

@@ -61,12 +61,11 @@ RealtimeStatus enableRealtimeForThisThread(int priority, std::initializer_list<M
     st.reason = std::string("SCHED_FIFO refused: ") + std::strerror(err) +
                 "; run as root or grant rtprio in /etc/security/limits.conf";
   }
+  // Only what the loop itself touches: a window or a user's program keeps the rest of its memory
+  // pageable. Headless tools lock the whole process from main (lockAllMemory()).
   int error = lockStack();
   for (const MemoryRegion& r : regions)
     if (error == 0 && r.size > 0 && mlock(r.data, r.size) != 0) error = errno;
-  // And, still, the whole process: what the loop's callbacks touch (the caller's plans, an
-  // in-process simulator) is not known here (docs/client.md, "Real-time setup").
-  if (error == 0 && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) error = errno;
   if (error == 0) {
     st.memory_locked = true;
   } else {

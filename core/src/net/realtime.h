@@ -13,7 +13,7 @@ namespace xmate::net {
 struct RealtimeStatus {
   bool fifo = false;           // SCHED_FIFO granted to this thread
   int priority = 0;            // its priority when granted
-  bool memory_locked = false;  // the thread's stack, its regions and the process are locked in RAM
+  bool memory_locked = false;  // the thread's stack and its regions are locked in RAM
   std::string reason;          // empty when both succeeded; else what was refused and what to do
   std::string describe() const;  // "SCHED_FIFO 80, memory locked" / "normal priority: ..."
 };
@@ -25,14 +25,14 @@ struct MemoryRegion {
 };
 
 // Tries SCHED_FIFO at priority (1..99) for the calling thread, and locks in RAM the thread's stack
-// (kLockedStackBytes, pre-faulted), `regions`, and -- because what a loop's callbacks touch is not
-// known here -- the whole process (mlockall). Set RCI_NO_REALTIME=1 to skip all of it (e.g. on a
-// shared development machine). Call it on the thread itself, before its loop.
+// (kLockedStackBytes, pre-faulted) and `regions` (mlock) -- not the rest of the process: a window
+// keeps its memory pageable; headless tools add lockAllMemory(). Set RCI_NO_REALTIME=1 to skip all
+// of it (e.g. on a shared development machine). Call it on the thread itself, before its loop.
 inline constexpr size_t kLockedStackBytes = 256 * 1024;
 RealtimeStatus enableRealtimeForThisThread(int priority = 80, std::initializer_list<MemoryRegion> regions = {});
 
-// mlockall(MCL_CURRENT | MCL_FUTURE) for the whole process: for headless real-time programs
-// (rci-cli, rci-sim), called once from main. "" on success, else what was refused and what to do.
+// mlockall(MCL_CURRENT | MCL_FUTURE) for the whole process: opt-in for headless real-time
+// programs (rci-cli, rci-sim), whose callbacks' plans are then locked too; called once from main. "" on success, else what was refused and what to do.
 // Skipped (returns "") with RCI_NO_REALTIME=1.
 std::string lockAllMemory();
 

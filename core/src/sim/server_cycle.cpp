@@ -201,7 +201,10 @@ void handOverJobsAtExit(Server::Impl& s) {
 
 void reportStartup(Server::Impl& s) {
   std::string realtime = "normal priority (real-time scheduling not requested)";
-  if (s.config.realtime) realtime = net::enableRealtimeForThisThread(s.config.realtime_priority).describe();
+  // The cycle thread's stack and the server's own state (the controller model inside it included);
+  // what the controller allocates on the heap is locked only where the whole process is (rci-sim).
+  if (s.config.realtime)
+    realtime = net::enableRealtimeForThisThread(s.config.realtime_priority, {{&s, sizeof s}}).describe();
   {
     std::lock_guard lock(s.snapshot_mutex);
     s.realtime_text = realtime;

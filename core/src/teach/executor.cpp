@@ -105,8 +105,11 @@ RunReport Executor::run(Robot& robot, const Program& program, const ExecutorOpti
   try {
     requireRobot(program, robot_->type());
     TraceOptions trace;
-    trace.q_start = robot_->receiveRobotState().q;
+    const RCI::robot::RobotState state = robot_->receiveRobotState();
+    trace.q_start = state.q;
     trace.tool = robot_->toolFrame();
+    trace.has_tcp = true;
+    trace.tcp = state.toolTobase_pos_m;
     trace.has_soft_limits = options.has_soft_limits;
     trace.soft_lower = options.soft_lower;
     trace.soft_upper = options.soft_upper;

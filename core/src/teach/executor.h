@@ -50,6 +50,11 @@ struct InstructionReport {
   double duration = 0;              // s: controller cycles for motions, wall time otherwise
   double max_joint_error = 0;       // motions: max over the motion of max_j |q_c - q| (rad)
   double max_tcp_error = 0;         // motions: max |TCP commanded - measured| position (m)
+  // Motions: controller time from the last command until the arm was at rest (s). If it was not at
+  // rest within 1 s, settled is false and settle_error the largest |q_c - q| then (rad).
+  double settle_time = 0;
+  bool settled = true;
+  double settle_error = 0;
 };
 
 struct RunReport {

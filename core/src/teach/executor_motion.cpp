@@ -21,6 +21,7 @@
 #include "planning/cartesian_pose.h"
 #include "planning/cartesian_trajectory.h"
 #include "teach/executor.h"
+#include "teach/preflight.h"
 #include "teach/targets.h"
 #include "teach/time_scaling.h"
 
@@ -32,7 +33,11 @@ using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
 using RCI::robot::RobotState;
 
 constexpr double kDt = 1e-3;
-constexpr double kSettleTolerance = 1e-6;  // rad: measured joints this close to the command = settled
+// After a motion the arm is at rest when every measured joint is this close to the last command
+// and this slow: far below what an operator or a next instruction notices (0.003 deg), well above
+// what a real arm's encoders and friction leave at standstill.
+constexpr double kSettleTolerance = 5e-5;  // rad
+constexpr double kSettleSpeed = 2e-3;      // rad/s
 constexpr int kSettleLimitMs = 1000;
 constexpr int kStartRetryMs = 3000;
 
@@ -106,11 +111,74 @@ double accelOverVelocity(InstructionType type, const model::RobotSpec& spec) {
   return std::min({c.a_trans / c.v_trans, c.a_rot / c.v_rot, c.a_elbow / c.v_elbow});
 }
 
-// Waits (bounded) until the measured joints have caught up with the last command.
-void settle(Robot& robot, int dof) {
+// How hard a pause or stop may brake: a joint motion at the rated joint accelerations; a Cartesian
+// one at half the controller's Cartesian accelerations, since braking the TCP near a singular pose
+// takes more of the joints than the path's own acceleration did (the plan was checked against the
+// joint limits, the braking is not).
+constexpr double kCartesianBrakingShare = 0.5;
+// The jerk a change of the scaling's rate may add: half the plan's unused share.
+constexpr double kRateChangeJerkShare = 0.5;
+
+// Sets the scaling's limits from the plan's velocity and acceleration at the clock's plan time
+// (central differences over 1 ms of plan time, in the bridge's coordinates and groups).
+template <class PlanAt>
+void limitScalingAtPlan(ScaledClock& clock, const PlanAt& plan_at, const client::StallBridge::Limits& limits,
+                        int dims, double braking_share) {
+  constexpr double h = 1e-3;
+  const double t = clock.plan_time;
+  const client::StallBridge::Vec p = plan_at(t), before = plan_at(std::max(0.0, t - h)), after = plan_at(t + h);
+  std::array<GroupMotion, client::StallBridge::kMaxDims> groups{};
+  int count = 0;
+  for (int g = 0; g < dims; ++g) {
+    double v2 = 0, a2 = 0;
+    bool member = false;
+    for (int i = 0; i < dims; ++i) {
+      if (limits.group[size_t(i)] != g) continue;
+      member = true;
+      const double v = (after[size_t(i)] - before[size_t(i)]) / (2 * h);
+      const double a = (after[size_t(i)] - 2 * p[size_t(i)] + before[size_t(i)]) / (h * h);
+      v2 += v * v;
+      a2 += a * a;
+    }
+    if (!member) continue;
+    groups[size_t(count++)] = {std::sqrt(v2), std::sqrt(a2), braking_share * limits.acceleration[size_t(g)],
+                               kRateChangeJerkShare * limits.jerk_reserve[size_t(g)]};
+  }
+  const ScalingLimits l = planScalingLimits(groups.data(), count, clock.scaling.value());
+  clock.scaling.setLimits(l.rate, l.rate_change);
+}
+
+bool atRest(const RobotState& s, int dof) {
+  if (jointError(s, dof) >= kSettleTolerance) return false;
+  for (int i = 0; i < dof; ++i)
+    if (std::abs(s.dq_m[i]) >= kSettleSpeed) return false;
+  return true;
+}
+
+// Waits (at most kSettleLimitMs) until the arm is at rest at the last command; records how long
+// that took in controller time, or that it did not come to rest.
+void settle(Robot& robot, int dof, InstructionReport& report) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(kSettleLimitMs);
-  while (std::chrono::steady_clock::now() < end)
-    if (jointError(robot.receiveRobotState(), dof) < kSettleTolerance) return;
+  const RobotState first = robot.receiveRobotState();
+  for (RobotState s = first;; s = robot.receiveRobotState()) {
+    report.settle_time = double(s.message_id - first.message_id) * kDt;
+    if (atRest(s, dof)) return;
+    if (std::chrono::steady_clock::now() >= end) {
+      report.settled = false;
+      report.settle_error = jointError(s, dof);
+      return;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+// Ends a motion that was started but will not be streamed (its plan failed or is empty).
+void endStartedMotion(Robot& robot) {
+  try {
+    robot.stopMove();
+  } catch (const std::exception&) {
+    // The controller ended it already (an error, a lost session): nothing left to stop.
+  }
 }
 
 }  // namespace
@@ -120,7 +188,7 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
   const model::RobotSpec& spec = model::robotSpec(robot_->type());
   const int dof = spec.dof;
   XmateModel model(robot_->type());
-  model.SetCoor(robot_->toolFrame());
+  model.SetCoor(program.has_tool ? program.tool : robot_->toolFrame());  // the TCP its poses are poses of
   model.SetSpeedCheckInterval(0);
   if (has_soft_limits_) {
     std::array<double, 7> upper{}, lower{};
@@ -131,6 +199,11 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
     model.SetJointLimit(upper, lower);  // IK of pose targets as the pre-flight resolved them
   }
   const RobotState state = robot_->receiveRobotState();
+  // The tool may have been changed since the pre-flight (another client, the pendant).
+  if (usesTool(in)) {
+    const ToolMismatch mismatch = toolMismatch(program, state.q, state.toolTobase_pos_m);
+    if (!toolMatches(mismatch)) throw MotionException(toolMismatchText(mismatch, program));
+  }
 
   const double share = in.speed * kSpeedShare;
   ScaledClock clock(override_.load(), safeScalingRate(share, accelOverVelocity(in.type, spec)));
@@ -166,11 +239,19 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
     const double total = generator.GetTime();
     if (total > 0) {
       std::array<double, 7> last = q0;
-      client::StallBridge bridge(dof, client::jointBridgeLimits(spec, share));
+      const client::StallBridge::Limits limits = client::jointBridgeLimits(spec, share);
+      client::StallBridge bridge(dof, limits);
+      auto planAt = [&](double time) {
+        std::array<double, 7> delta{}, plan{};
+        const bool finished = generator.calculateDesiredValues_joint(time, delta);
+        for (int i = 0; i < dof; ++i) plan[i] = finished ? goal[i] : q0[i] + delta[i];
+        return plan;
+      };
       startMoveWhenReady(*robot_, CM::kJointPosition, MM::kJointPosition);
       robot_->Control(JointControl([&](RobotState s) -> JointPositions {
         const bool starting = clock.calls == 0;
         track(s);
+        limitScalingAtPlan(clock, planAt, limits, dof, 1.0);
         const double t = clock.advance(s, targetK());
         if (starting && clock.calls == 1) {
           q0 = s.q;  // where the motion really starts
@@ -188,11 +269,9 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
         }
         bool plan_finished = false;
         const client::StallBridge::Vec q = bridge.command(s.message_id, [&](int k) {
-          std::array<double, 7> delta{}, plan{};
-          const bool finished = generator.calculateDesiredValues_joint(clock.planTimeBefore(k), delta);
-          if (k == 0) plan_finished = finished;
-          for (int i = 0; i < dof; ++i) plan[i] = finished ? goal[i] : q0[i] + delta[i];
-          return plan;
+          const double time = clock.planTimeBefore(k);
+          if (k == 0) plan_finished = time >= generator.GetTime();
+          return planAt(time);
         });
         out.q = q;
         last = out.q;
@@ -201,21 +280,38 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
       }));
     }
   } else {
-    const planning::CartesianPath path = cartesianPath(in, model, state.q);
-    const planning::CartesianTrajectory trajectory =
-        client::planWithinJointLimits(typeName(in.type), path, share, model, state.q);
+    // Planned once the controller accepted the motion, from where the arm is then: the previous
+    // motion's stop may have taken it a little further while startMove was retried. Until Control()
+    // the client answers every state with "hold still".
+    startMoveWhenReady(*robot_, CM::kCartesianPosition, MM::kCartesianPosition);
+    planning::CartesianPath path;
+    planning::CartesianTrajectory trajectory;
+    try {
+      const std::array<double, 7> q_now = robot_->receiveRobotState().q;
+      path = cartesianPath(in, model, q_now);
+      trajectory = client::planWithinJointLimits(typeName(in.type), path, share, model, q_now);
+    } catch (...) {
+      endStartedMotion(*robot_);
+      throw;
+    }
     const double total = planning::duration(trajectory);
+    if (!(total > 0)) endStartedMotion(*robot_);
     if (total > 0) {
       CartesianPose last;
       last.toolTobase_pos_c = planning::poseToRowMajor(path.start.pose);
       last.psi_valid = dof == 7;
       last.psi_c = path.start.psi;
       const Eigen::Matrix3d reference = path.start.pose.linear();
-      client::StallBridge bridge(7, client::cartesianBridgeLimits(share));
-      startMoveWhenReady(*robot_, CM::kCartesianPosition, MM::kCartesianPosition);
+      const client::StallBridge::Limits limits = client::cartesianBridgeLimits(share);
+      client::StallBridge bridge(7, limits);
+      auto planAt = [&](double time) {
+        const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, time);
+        return client::cartesianCoordinates(sample.pose, sample.psi, reference);
+      };
       robot_->Control(CartesianControl([&](RobotState s) -> CartesianPose {
         track(s);
         const bool starting = clock.calls == 0;
+        limitScalingAtPlan(clock, planAt, limits, 7, kCartesianBrakingShare);
         const double t = clock.advance(s, targetK());
         if (starting && clock.calls == 1)
           bridge.startAt(s.message_id, client::cartesianCoordinates(s.toolTobase_pos_c, s.psi_c, reference));
@@ -245,7 +341,7 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
     report.status = InstructionStatus::kStopped;
     report.message = "stopped by the operator";
   }
-  settle(*robot_, dof);
+  settle(*robot_, dof, report);
 }
 
 }  // namespace xmate::teach

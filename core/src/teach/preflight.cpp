@@ -45,7 +45,7 @@ class Tracer {
  public:
   Tracer(const Program& program, const TraceOptions& options)
       : program_(program), options_(options), spec_(model::robotSpec(program.robot)), model_(program.robot) {
-    model_.SetCoor(options.tool);
+    model_.SetCoor(program.has_tool ? program.tool : options.tool);  // the TCP its poses are poses of
     model_.SetSpeedCheckInterval(0);
     if (options.has_soft_limits) {
       std::array<double, 7> up{}, low{};
@@ -59,9 +59,17 @@ class Tracer {
 
   ProgramTrace run() {
     q_ = options_.q_start;
+    // The measured TCP is the one at q_start: compare there, report at the first pose it concerns.
+    const ToolMismatch tool = options_.has_tcp ? toolMismatch(program_, q_, options_.tcp) : ToolMismatch{};
+    const bool tool_ok = toolMatches(tool);
+    bool tool_reported = false;
     for (size_t i = 0; i < program_.instructions.size(); ++i) {
       index_ = i;
       current_ = InstructionTrace{};
+      if (!tool_ok && !tool_reported && usesTool(program_.instructions[i])) {
+        problem(toolMismatchText(tool, program_));
+        tool_reported = true;  // once, at the first instruction it concerns
+      }
       traceOne(program_.instructions[i]);
       current_.q_end = q_;
       result_.instructions.push_back(current_);
@@ -219,6 +227,39 @@ std::vector<std::vector<std::array<double, 3>>> plannedPath(const Program& progr
   for (InstructionTrace& t : traceProgram(program, options).instructions)
     paths.push_back(t.traced ? std::move(t.tcp_path) : std::vector<std::array<double, 3>>{});
   return paths;
+}
+
+ToolMismatch toolMismatch(const Program& program, const std::array<double, 7>& q, const std::array<double, 16>& tcp) {
+  if (!program.has_tool) return {};
+  XmateModel model(program.robot);
+  model.SetCoor(program.tool);
+  const Eigen::Isometry3d expected = planning::poseFromRowMajor(model.GetCartPose(q), "TCP");
+  const Eigen::Isometry3d measured = planning::poseFromRowMajor(tcp, "measured TCP");
+  ToolMismatch m;
+  m.distance = (expected.translation() - measured.translation()).norm();
+  m.angle = Eigen::AngleAxisd(expected.linear().transpose() * measured.linear()).angle();
+  return m;
+}
+
+bool toolMatches(const ToolMismatch& m) { return m.distance <= kToolMismatchDistance && m.angle <= kToolMismatchAngle; }
+
+std::string toolMismatchText(const ToolMismatch& m, const Program& program) {
+  // R = Rz(rz) Ry(ry) Rx(rx), ry within +-90 deg, as the Tool & payload panel takes it.
+  const auto& t = program.tool;  // row-major: R(r, c) = t[4 r + c]
+  const double rx = std::atan2(t[9], t[10]), ry = std::asin(std::clamp(-t[8], -1.0, 1.0)), rz = std::atan2(t[4], t[0]);
+  return fmt("the robot's TCP is %.1f mm and %.1f deg away from the TCP of the tool this program was taught with",
+             m.distance * 1000, m.angle * kDeg) +
+         " (allowed: 1 mm and 0.5 deg), so its poses would be reached with another point of the tool; " +
+         fmt("the program's tool is x, y, z = (%.4f, %.4f, %.4f) m", program.tool[3], program.tool[7],
+             program.tool[11]) +
+         fmt(", rx, ry, rz = (%.2f, %.2f, %.2f) deg from the flange (applied as Rz Ry Rx): ", rx * kDeg + 0.0,
+             ry * kDeg + 0.0, rz * kDeg + 0.0) +
+         "set the tool and load the program was taught with, or teach the program again with this tool";
+}
+
+bool usesTool(const Instruction& in) {
+  if (in.type == InstructionType::kMoveL || in.type == InstructionType::kMoveC) return true;
+  return in.type == InstructionType::kMoveJ && !in.target.has_q;
 }
 
 std::string problemsText(const std::vector<Problem>& problems) {

@@ -30,6 +30,10 @@ struct TraceOptions {
   std::array<double, 7> soft_lower{}, soft_upper{};
   bool has_box = false;
   SafetyBox box;
+  // The controller's measured TCP at q_start (RobotState::toolTobase_pos_m), for the tool check of a
+  // program that records its tool.
+  bool has_tcp = false;
+  std::array<double, 16> tcp = kIdentityPose;
 };
 
 struct Problem {
@@ -61,6 +65,25 @@ std::vector<Problem> preflight(const Program& program, const TraceOptions& optio
 std::vector<std::vector<std::array<double, 3>>> plannedPath(const Program& program,
                                                             const std::array<double, 7>& q_start,
                                                             const std::array<double, 16>& tool = kIdentityPose);
+
+// How far the robot's TCP is from where the program's tool puts it: the TCP of the program's tool
+// at joints q (forward kinematics) against the controller's measured TCP there. Zero for a program
+// without a recorded tool.
+struct ToolMismatch {
+  double distance = 0;  // m
+  double angle = 0;     // rad
+};
+ToolMismatch toolMismatch(const Program& program, const std::array<double, 7>& q, const std::array<double, 16>& tcp);
+// Beyond these a run refuses the instructions that use poses (MOVEL, MOVEC, MOVEJ to a pose).
+inline constexpr double kToolMismatchDistance = 1e-3;    // m
+inline constexpr double kToolMismatchAngle = 0.5 / 57.29577951308232;  // rad (0.5 deg)
+bool toolMatches(const ToolMismatch& m);
+// "the robot's TCP is 120.0 mm and 0.0 deg away from the TCP of the tool this program was taught
+// with (...)": the problem text, with the program's TCP and what to do.
+std::string toolMismatchText(const ToolMismatch& m, const Program& program);
+// Whether the instruction's motion depends on the tool: MOVEL, MOVEC, and MOVEJ to a target taught
+// as a pose only.
+bool usesTool(const Instruction& in);
 
 // All problems as one text, a line each.
 std::string problemsText(const std::vector<Problem>& problems);

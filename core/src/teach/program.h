@@ -41,8 +41,23 @@ struct Instruction {
   int timeout_ms = 0;      // WAIT_DI: give up after this long (> 0)
 };
 
+// The payload the controller was told about (Robot::setLoad): mass, centre of mass in the flange
+// frame, inertia about it (row-major 3x3).
+struct Payload {
+  double mass = 0;                   // kg
+  std::array<double, 3> center{};    // m
+  std::array<double, 9> inertia{};   // kg m^2
+};
+
 struct Program {
   XmateType robot = XMATE7_PRO;
+  // The tool (TCP in the flange frame, 4x4 row-major) and payload the program was taught with. Its
+  // poses are poses of that TCP: with another tool on the robot MOVEL/MOVEC would drive the new TCP
+  // to them, so a run refuses when the robot's TCP does not match (toolMismatch, preflight.h).
+  // Programs saved before RCI Studio recorded the tool have has_tool = false.
+  bool has_tool = false;
+  std::array<double, 16> tool{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  Payload load;
   std::vector<Instruction> instructions;
 };
 

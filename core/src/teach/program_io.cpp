@@ -109,6 +109,17 @@ Target targetFrom(const Json& v, const std::string& field, const model::RobotSpe
   return t;
 }
 
+Payload payloadFrom(const Json& v, const Where& w) {
+  if (!v.is_object()) w.fail("load", "expected an object with \"mass\", \"center\" and \"inertia\", " + got(v));
+  refuseUnknown(v, {"mass", "center", "inertia"}, "load", w);
+  Payload p;
+  p.mass = finiteNumber(require(v, "mass", "load.mass", w), "load.mass", w);
+  if (p.mass < 0) w.fail("load.mass", "expected a mass in kg, 0 or more, got " + std::to_string(p.mass));
+  p.center = numberArray<3>(require(v, "center", "load.center", w), "load.center", "centre of mass in the flange frame, m", w);
+  p.inertia = numberArray<9>(require(v, "inertia", "load.inertia", w), "load.inertia", "3x3 row-major, kg m^2", w);
+  return p;
+}
+
 double speedFrom(const Json& in, const Where& w) {
   const double s = finiteNumber(require(in, "speed", "speed", w), "speed", w);
   if (!(s > 0 && s <= 1)) w.fail("speed", "expected a speed ratio in (0, 1], got " + std::to_string(s));
@@ -224,10 +235,14 @@ Program programFromJson(const Json& doc) {
   if (!format.is_string() || format.get_ref<const std::string&>() != kProgramFormat)
     w.fail("format", std::string("expected \"") + kProgramFormat + "\" (this is not an RCI Studio program)");
   const Json& version = require(doc, "version", "version", w);
-  if (!version.is_number() || version.get<double>() != kProgramVersion)
-    w.fail("version", "unsupported version (this RCI Studio reads version " + std::to_string(kProgramVersion) +
-                          "); save the program again with a matching RCI Studio");
-  refuseUnknown(doc, {"format", "version", "robot", "instructions"}, "", w);
+  const double v = version.is_number() ? version.get<double>() : 0.0;
+  if (v != std::floor(v) || v < kOldestProgramVersion || v > kProgramVersion)
+    w.fail("version", "unsupported version " + version.dump() + " (this RCI Studio reads versions " + std::to_string(kOldestProgramVersion) +
+                          " to " + std::to_string(kProgramVersion) + "); open it with the RCI Studio that saved it");
+  if (v < 2)  // the tool and load came with version 2
+    refuseUnknown(doc, {"format", "version", "robot", "instructions"}, "", w);
+  else
+    refuseUnknown(doc, {"format", "version", "robot", "tool", "load", "instructions"}, "", w);
   const Json& robot = require(doc, "robot", "robot", w);
   if (!robot.is_string()) w.fail("robot", "expected a model name string, " + got(robot));
   const model::RobotSpec* spec = model::findRobotSpec(robot.get_ref<const std::string&>());
@@ -236,6 +251,20 @@ Program programFromJson(const Json& doc) {
   if (!list.is_array()) w.fail("instructions", "expected an array, " + got(list));
   Program p;
   p.robot = spec->type;
+  const Json* tool = member(doc, "tool");
+  const Json* load = member(doc, "load");
+  if ((tool == nullptr) != (load == nullptr))
+    w.fail(tool ? "load" : "tool", "missing (a program records its tool and its load together)");
+  if (tool) {
+    p.tool = numberArray<16>(*tool, "tool", "the TCP in the flange frame, 4x4 row-major homogeneous transform, m", w);
+    try {
+      planning::poseFromRowMajor(p.tool, "tool");
+    } catch (const std::invalid_argument& e) {
+      w.fail("tool", std::string("not a homogeneous transform: ") + e.what());
+    }
+    p.load = payloadFrom(*load, w);
+    p.has_tool = true;
+  }
   for (size_t i = 0; i < list.size(); ++i) p.instructions.push_back(instructionFrom(list[i], i, *spec));
   return p;
 }
@@ -245,6 +274,14 @@ Json programToJson(const Program& program) {
   doc["format"] = kProgramFormat;
   doc["version"] = kProgramVersion;
   doc["robot"] = std::string(model::robotSpec(program.robot).name);
+  if (program.has_tool) {
+    doc["tool"] = program.tool;
+    Json load = Json::object();
+    load["mass"] = program.load.mass;
+    load["center"] = program.load.center;
+    load["inertia"] = program.load.inertia;
+    doc["load"] = std::move(load);
+  }
   Json list = Json::array();
   for (const Instruction& in : program.instructions) list.push_back(instructionToJson(in));
   doc["instructions"] = std::move(list);

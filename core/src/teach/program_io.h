@@ -21,7 +21,8 @@ class ProgramError : public std::runtime_error {
 };
 
 inline constexpr const char* kProgramFormat = "rci-program";
-inline constexpr int kProgramVersion = 1;
+inline constexpr int kProgramVersion = 2;         // what saving writes: adds "tool" and "load"
+inline constexpr int kOldestProgramVersion = 1;   // still read
 
 // A parsed document (teach/json_text.h) <-> program.
 Program programFromJson(const nlohmann::ordered_json& document);

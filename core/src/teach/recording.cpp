@@ -2,7 +2,12 @@
 // Recording helpers (recording.h).
 #include "teach/recording.h"
 
+#include <Eigen/Geometry>
+#include <xmate/model.h>
+
 #include "model/robot_spec.h"
+#include "planning/cartesian_pose.h"
+#include "teach/preflight.h"
 
 namespace xmate::teach {
 
@@ -17,6 +22,27 @@ Target targetFromState(const RCI::robot::RobotState& state, XmateType type) {
   t.has_psi = true;
   t.psi = six_axis ? 0.0 : state.psi_m;
   return t;
+}
+
+std::string adoptTool(Program& program, const RCI::robot::RobotState& state, const std::array<double, 16>& tool,
+                      const Payload& load) {
+  if (program.has_tool) {
+    const ToolMismatch mismatch = toolMismatch(program, state.q, state.toolTobase_pos_m);
+    return toolMatches(mismatch) ? std::string() : toolMismatchText(mismatch, program);
+  }
+  if (!program.instructions.empty()) return {};  // taught before tools were recorded: unknown
+  Program taught = program;
+  taught.has_tool = true;
+  taught.tool = tool;
+  if (!toolMatches(toolMismatch(taught, state.q, state.toolTobase_pos_m))) {
+    XmateModel flange_model(program.robot);  // identity tool: the flange
+    const Eigen::Isometry3d flange = planning::poseFromRowMajor(flange_model.GetCartPose(state.q), "flange");
+    const Eigen::Isometry3d tcp = planning::poseFromRowMajor(state.toolTobase_pos_m, "measured TCP");
+    taught.tool = planning::poseToRowMajor(flange.inverse() * tcp);
+  }
+  taught.load = load;
+  program = std::move(taught);
+  return {};
 }
 
 namespace {

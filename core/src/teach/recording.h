@@ -3,6 +3,9 @@
 // and motion instructions built from taught targets.
 #pragma once
 
+#include <array>
+#include <string>
+
 #include <xmate/rci_types.h>
 
 #include "teach/program.h"
@@ -12,6 +15,14 @@ namespace xmate::teach {
 // The measured joints, TCP pose and arm angle of `state`; on 6-axis models q[6] is forced to 0
 // and psi to 0.
 Target targetFromState(const RCI::robot::RobotState& state, XmateType type);
+
+// The tool and payload a program is taught with. The first recording into an empty program without
+// a recorded tool makes them the program's: `tool` (Robot::toolFrame()) if the measured TCP of
+// `state` agrees with it, else the tool the measured TCP implies (another client or the pendant set
+// it), and `load`. Later recordings need the robot's TCP to match the program's tool (toolMismatch,
+// preflight.h). Returns "" when recording may go on, else the problem (toolMismatchText).
+std::string adoptTool(Program& program, const RCI::robot::RobotState& state, const std::array<double, 16>& tool,
+                      const Payload& load);
 
 Instruction moveJ(const Target& target, double speed, std::string name = {});
 Instruction moveL(const Target& target, double speed, std::string name = {});

@@ -26,6 +26,9 @@ Json instructionJson(const Program& program, size_t i, const InstructionReport& 
   if (isMotion(in.type) && r.status != InstructionStatus::kNotRun) {
     v["max_joint_error_rad"] = r.max_joint_error;
     v["max_tcp_error_m"] = r.max_tcp_error;
+    v["settle_s"] = r.settle_time;
+    v["settled"] = r.settled;
+    if (!r.settled) v["settle_error_rad"] = r.settle_error;
   }
   return v;
 }

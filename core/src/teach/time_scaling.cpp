@@ -18,9 +18,28 @@ double safeScalingRate(double share, double accel_over_velocity) {
 
 void TimeScaling::setTarget(double k) { target_ = std::clamp(std::isfinite(k) ? k : 0.0, 0.0, 1.0); }
 
+void TimeScaling::setLimits(double max_rate, double max_rate_change) {
+  max_rate_ = std::isfinite(max_rate) ? std::max(max_rate, kMinRate) : kMinRate;
+  max_rate_change_ = std::isfinite(max_rate_change) ? std::max(max_rate_change, kRateChange) : kRateChange;
+}
+
+ScalingLimits planScalingLimits(const GroupMotion* groups, int count, double k) {
+  constexpr double kMargin = 0.9;
+  double rate = TimeScaling::kMaxRate, rate_change = kMaxRateChange;
+  for (int g = 0; g < count; ++g) {
+    const GroupMotion& m = groups[g];
+    if (!(m.velocity > 1e-9)) continue;  // standing still: k may change at any rate
+    const double spare = std::max(0.0, m.acceleration_limit - m.acceleration * k * k);
+    rate = std::min(rate, kMargin * spare / m.velocity);
+    rate_change = std::min(rate_change, kMargin * m.jerk_reserve / m.velocity);
+  }
+  return {std::clamp(rate, TimeScaling::kMinRate, TimeScaling::kMaxRate),
+          std::clamp(rate_change, TimeScaling::kRateChange, kMaxRateChange)};
+}
+
 void TimeScaling::step(double dt) {
   const double error = target_ - value_;
-  const double max_change = kRateChange * dt;
+  const double max_change = max_rate_change_ * dt;
   if (std::abs(error) < 1e-12 && std::abs(rate_) <= max_change) {
     value_ = target_;
     rate_ = 0;
