@@ -9,7 +9,8 @@ PACKAGES="build-essential cmake ninja-build pkg-config file dpkg-dev
  nlohmann-json3-dev libcli11-dev libinih-dev
  liborocos-kdl-dev libkdl-parser-dev
  clang-14 libclang-rt-14-dev
- xvfb xauth libgl1-mesa-dri fonts-dejavu-core"
+ xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+ help2man lintian desktop-file-utils appstream"
 
 missing=""
 for p in $PACKAGES; do

@@ -166,12 +166,16 @@ int main(int argc, char** argv) {
   addWholeNumberOption(*client, "--cycles", client_cycles, 1000, 100'000'000, "cycles to measure (default 100000)");
 
   CLI::App* help = app.add_subcommand("help", "this text");
+  app.set_version_flag("--version", std::string("rci-cli ") + RCI_VERSION, "Print the version and exit");
 
   try {
     app.parse(argc, argv);
     run_options.have_model = run_model->count() > 0;
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::CallForVersion&) {
+    std::printf("rci-cli %s\n", RCI_VERSION);
     return 0;
   } catch (const CLI::ParseError& e) {
     const CLI::App* command = selectedCommand(app);

@@ -98,6 +98,10 @@ int main(int argc, char** argv) {
     std::cout << rcisim::usageText();
     return 0;
   }
+  if (options.version) {
+    std::cout << "rci-sim " << RCI_VERSION << '\n';
+    return 0;
+  }
   try {
     return run(options);
   } catch (const std::exception& e) {

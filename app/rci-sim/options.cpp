@@ -63,6 +63,7 @@ void describe(CLI::App& app, Options& o, std::string& model, long& control_port)
       "Runs a simulated xMate controller that speaks the RCI protocol (TCP commands, 1 kHz UDP states).");
   app.footer("SIGINT or SIGTERM stops it cleanly. A wrong option exits with 2. See docs/simulator.md.");
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.set_version_flag("--version", std::string("rci-sim ") + RCI_VERSION, "Print the version and exit");
   app.add_option("--model", model, "robot model: " + modelList() + " (default xmate7_pro)")
       ->type_name("NAME")
       ->check(modelName());
@@ -146,6 +147,8 @@ Options parseOptions(int argc, const char* const* argv) {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     o.help = true;
+  } catch (const CLI::CallForVersion&) {
+    o.version = true;
   } catch (const CLI::ParseError& e) {
     throw UsageError(explain(e));
   }

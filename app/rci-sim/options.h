@@ -27,6 +27,7 @@ struct Options {
   int connect_timeout_ms = 3000;  // a connection must send Connect within this (0: no limit)
   int idle_timeout_ms = 10000;    // a silent session gives way to a new client after this (0: never)
   bool help = false;
+  bool version = false;  // --version: print "rci-sim VERSION" and exit
 };
 
 // A wrong command line; the message says which option and what is allowed.

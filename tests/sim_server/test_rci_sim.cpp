@@ -163,6 +163,12 @@ class TestRciSim : public QObject {
       QVERIFY2(r.out.contains(option), option);
   }
 
+  void versionPrintsTheVersion() {
+    const Finished r = runToEnd({"--version"});
+    QCOMPARE(r.exit_code, 0);
+    QVERIFY2(r.out.startsWith("rci-sim 0."), qPrintable(r.out));
+  }
+
   void nonLoopbackBindWarns() {
     QProcess sim;
     sim.start(RCI_SIM_PATH, {"--bind", "0.0.0.0", "--port", "0", "--print-port", "--no-realtime"});

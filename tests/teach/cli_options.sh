@@ -60,6 +60,7 @@ expect 0 "bench" help
 expect 0 "--report FILE" run --help
 expect 0 "--lockstep" bench loop --help
 expect 0 "--count N" state -h
+expect 0 "rci-cli 0." --version
 # The default and a model, with --opt=value and --opt value (no robot needed).
 expect 0 "xMate Pro 7 (xmate7_pro), 7 axes"
 expect 0 "xMate 3 (xmate3), 6 axes" model xmate3
