@@ -21,6 +21,22 @@ std::string wholeNumberProblem(const std::string& text, long lo, long hi) {
   return "takes a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" + text + "'";
 }
 
+// A check that runs `parse` on the value and reports the UsageError it throws (the parser's own
+// words), so the check and the parse cannot disagree.
+template <class Parse>
+CLI::Validator parsedBy(Parse parse) {
+  return CLI::Validator(
+      [parse](std::string& text) {
+        try {
+          parse(text);
+          return std::string();
+        } catch (const UsageError& e) {
+          return std::string(e.what());
+        }
+      },
+      "");
+}
+
 // CLI11 prefixes a validator's message with the option's name: "--cycles: takes ..."; main() joins
 // them into "--cycles takes ...".
 CLI::Validator wholeNumber(long lo, long hi) {
@@ -61,33 +77,16 @@ CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_all
       "--robot", [&target, sim_allowed](const std::string& text) { target = parseRobotTarget(text, sim_allowed); },
       help);
   option->type_name(sim_allowed ? "sim|HOST:PORT" : "HOST:PORT");
-  option->check(CLI::Validator(
-      [sim_allowed](std::string& text) {
-        try {
-          parseRobotTarget(text, sim_allowed);
-          return std::string();
-        } catch (const UsageError& e) {
-          return std::string(e.what());
-        }
-      },
-      ""));
+  option->check(parsedBy([sim_allowed](const std::string& text) { parseRobotTarget(text, sim_allowed); }));
   return option;
 }
 
-CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std::string& help) {
+CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std::string& help,
+                            const std::string& name) {
   CLI::Option* option = command.add_option_function<std::string>(
-      "--model", [&type](const std::string& text) { type = parseModel(text); }, help);
+      name, [&type](const std::string& text) { type = parseModel(text); }, help);
   option->type_name("NAME");
-  option->check(CLI::Validator(
-      [](std::string& text) {
-        try {
-          parseModel(text);
-          return std::string();
-        } catch (const UsageError& e) {
-          return std::string(e.what());
-        }
-      },
-      ""));
+  option->check(parsedBy([](const std::string& text) { parseModel(text); }));
   return option;
 }
 

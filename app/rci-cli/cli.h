@@ -42,8 +42,9 @@ RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed);
 // message says what the option takes and what it got):
 //   --robot sim|HOST:PORT (or HOST:PORT alone), parsed by parseRobotTarget into `target`;
 CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_allowed, const std::string& help);
-//   --model NAME, one of the four model names;
-CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std::string& help);
+//   --model NAME (or another name, e.g. the positional NAME of `model`), one of the four model names;
+CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std::string& help,
+                            const std::string& name = "--model");
 //   a whole number in [lo, hi].
 CLI::Option* addWholeNumberOption(CLI::App& command, const std::string& name, long& value, long lo, long hi,
                                   const std::string& help);

@@ -101,18 +101,7 @@ int main(int argc, char** argv) {
 
   xmate::XmateType model_type = xmate::XMATE7_PRO;
   CLI::App* model = app.add_subcommand("model", "the published limits of a model (default xmate7_pro)");
-  model->add_option_function<std::string>("NAME", [&](const std::string& text) { model_type = parseModel(text); },
-                                          "xmate3_pro, xmate7_pro, xmate3 or xmate7")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            try {
-              parseModel(text);
-              return std::string();
-            } catch (const UsageError& e) {
-              return std::string(e.what());
-            }
-          },
-          ""));
+  addModelOption(*model, model_type, "xmate3_pro, xmate7_pro, xmate3 or xmate7", "NAME");
 
   StateOptions state_options;
   CLI::App* state = app.add_subcommand("state", "live readout of a robot's state (joints, torques, TCP pose, "

@@ -13,6 +13,7 @@
 #include <xmate/robot.h>
 
 #include "sim/server.h"
+#include "state_compare.h"
 
 namespace client_test {
 
@@ -67,12 +68,8 @@ xmate::JointControl holdStill(int cycles, int* calls = nullptr);
 // (7th-order) profile of `seconds`, through startMove + Control.
 void smoothJointMove(xmate::Robot& robot, int joint, double delta, double seconds);
 
-// The largest |a[i] - b[i]| over the first n elements.
-template <size_t N>
-double maxAbsDiff(const std::array<double, N>& a, const std::array<double, N>& b, size_t n = N) {
-  double m = 0;
-  for (size_t i = 0; i < n; ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
+using rci_test::anyError;
+using rci_test::distance;
+using rci_test::maxAbsDiff;
 
 }  // namespace client_test

@@ -23,10 +23,6 @@ namespace {
 constexpr double kJointTolerance = 1e-4;     // rad
 constexpr double kPositionTolerance = 1e-4;  // m
 
-double distance(const std::array<double, 16>& a, const std::array<double, 16>& b) {
-  return std::sqrt(std::pow(a[3] - b[3], 2) + std::pow(a[7] - b[7], 2) + std::pow(a[11] - b[11], 2));
-}
-
 double rotationDifference(const std::array<double, 16>& a, const std::array<double, 16>& b) {
   double m = 0;
   for (int r = 0; r < 3; ++r)

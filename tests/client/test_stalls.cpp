@@ -44,10 +44,6 @@ SimOptions realTimeClock() {
   return o;
 }
 
-double distance(const std::array<double, 16>& a, const std::array<double, 16>& b) {
-  return std::sqrt(std::pow(a[3] - b[3], 2) + std::pow(a[7] - b[7], 2) + std::pow(a[11] - b[11], 2));
-}
-
 bool settlesAt(Robot& robot, const std::array<double, 7>& q) {
   return eventually([&] { return maxAbsDiff(robot.receiveRobotState().q, q) < kJointTolerance; }, 3000);
 }

@@ -19,6 +19,7 @@
 #include <QTest>
 
 #include "gui_test_support.h"
+#include "window_driver.h"
 #include "session/session.h"
 #include "window/banner.h"
 #include "window/connection_bar.h"
@@ -28,6 +29,7 @@
 using namespace rci::ui;
 
 using rci::ui::test::lockstepSimulator;
+using rci::ui::test::WindowDriver;
 using rci::ui::test::unusedPort;
 
 namespace {
@@ -42,25 +44,12 @@ class TestMainWindow : public QObject {
  private:
   template <class T>
   T* find(const QString& name) {
-    T* widget = window_->findChild<T*>(name);
-    if (!widget) qWarning("no widget named %s", qPrintable(name));
-    return widget;
+    return WindowDriver(window_).find<T>(name);
   }
   QString label(const QString& name) { return find<QLabel>(name)->text(); }
   bool lampOn(const QString& name) { return find<QWidget>(name)->property("on").toBool(); }
-  // Brings the dock holding widget to the front (docks are tabbed), then clicks it.
-  void click(const QString& name) {
-    auto* button = find<QAbstractButton>(name);
-    QVERIFY2(button, qPrintable(name));
-    for (QWidget* w = button; w; w = w->parentWidget()) {
-      if (auto* dock = qobject_cast<QDockWidget*>(w)) {
-        dock->show();
-        dock->raise();
-      }
-    }
-    QVERIFY2(button->isEnabled(), qPrintable(name + " is disabled"));
-    QTest::mouseClick(button, Qt::LeftButton, {}, QPoint(6, button->height() / 2));
-  }
+  // Brings the dock holding the button to the front (docks are tabbed), then clicks it.
+  void click(const QString& name) { QVERIFY2(WindowDriver(window_).click(name), qPrintable(name)); }
   void connectSimulator();
 
   QTemporaryDir state_dir_;

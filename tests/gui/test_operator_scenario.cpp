@@ -34,6 +34,7 @@
 #include "window/main_window.h"
 #include "window/message_log.h"
 #include "window_driver.h"
+#include "state_compare.h"
 
 using namespace rci::ui;
 using rci::ui::test::WindowDriver;
@@ -43,13 +44,8 @@ namespace {
 constexpr int kWaitMs = 60000;  // a safety net for a loaded machine, not a timing claim
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
-double distance(const std::array<double, 16>& a, const std::array<double, 16>& b) {
-  return std::sqrt(std::pow(a[3] - b[3], 2) + std::pow(a[7] - b[7], 2) + std::pow(a[11] - b[11], 2));
-}
-
-bool anyError(const RCI::robot::RobotState& s) {
-  return std::any_of(s.errors.begin(), s.errors.end(), [](bool e) { return e; });
-}
+using rci_test::anyError;
+using rci_test::distance;
 
 QWindow* window3d() {
   for (QWindow* w : QGuiApplication::allWindows())

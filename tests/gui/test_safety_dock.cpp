@@ -17,12 +17,14 @@
 #include <QTest>
 
 #include "gui_test_support.h"
+#include "window_driver.h"
 #include "panels/lamp.h"
 #include "session/session.h"
 #include "window/main_window.h"
 
 using namespace rci::ui;
 using rci::ui::test::lockstepSimulator;
+using rci::ui::test::WindowDriver;
 
 namespace {
 
@@ -37,9 +39,7 @@ class TestSafetyDock : public QObject {
  private:
   template <class T>
   T* find(const QString& name) {
-    T* widget = window_->findChild<T*>(name);
-    if (!widget) qWarning("no widget named %s", qPrintable(name));
-    return widget;
+    return WindowDriver(window_).find<T>(name);
   }
   QString label(const QString& name) { return find<QLabel>(name)->text(); }
   bool lampOn(const QString& name) { return find<Lamp>(name)->isOn(); }

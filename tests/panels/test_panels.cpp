@@ -28,6 +28,7 @@
 #include "panels/tool_panel.h"
 #include "session/session.h"
 #include "window/parts.h"
+#include "window_driver.h"
 
 using namespace rci::ui;
 
@@ -43,21 +44,13 @@ class TestPanels : public QObject {
  private:
   template <class T>
   T* find(const QString& name) {
-    T* w = host_->findChild<T*>(name);
-    if (!w) qWarning("no widget named %s", qPrintable(name));
-    return w;
+    return test::WindowDriver(host_).find<T>(name);
   }
   bool lampOn(const QString& name) {
     auto* lamp = find<Lamp>(name);
     return lamp && lamp->isOn();
   }
-  void click(const QString& name) {
-    auto* button = find<QAbstractButton>(name);
-    QVERIFY2(button, qPrintable(name));
-    QVERIFY2(button->isEnabled(), qPrintable(name + " is disabled"));
-    // In the middle, as a user would (check boxes are only as wide as indicator and label).
-    QTest::mouseClick(button, Qt::LeftButton);
-  }
+  void click(const QString& name) { QVERIFY2(test::WindowDriver(host_).click(name), qPrintable(name)); }
   void setField(const QString& name, double value) {
     auto* field = find<QDoubleSpinBox>(name);
     QVERIFY2(field, qPrintable(name));

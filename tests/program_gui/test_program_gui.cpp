@@ -27,9 +27,11 @@
 #include "panels/lamp.h"
 #include "panels/program_panel.h"
 #include "session/session.h"
+#include "state_compare.h"
 #include "teach/program_io.h"
 #include "teach/recording.h"
 #include "window/parts.h"
+#include "window_driver.h"
 
 using namespace rci::ui;
 using xmate::teach::InstructionType;
@@ -41,21 +43,9 @@ constexpr int kWaitMs = 30000;  // a safety net for a loaded machine, not a timi
 constexpr double kJointTolerance = 1e-4;     // rad
 constexpr double kPositionTolerance = 1e-4;  // m
 
-double distance(const std::array<double, 16>& a, const std::array<double, 16>& b) {
-  return std::sqrt(std::pow(a[3] - b[3], 2) + std::pow(a[7] - b[7], 2) + std::pow(a[11] - b[11], 2));
-}
-
-double maxAbsDiff(const std::array<double, 7>& a, const std::array<double, 7>& b) {
-  double m = 0;
-  for (size_t i = 0; i < 7; ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
-
-bool anyError(const RCI::robot::RobotState& s) {
-  for (bool e : s.errors)
-    if (e) return true;
-  return false;
-}
+using rci_test::anyError;
+using rci_test::distance;
+using rci_test::maxAbsDiff;
 
 }  // namespace
 
@@ -65,16 +55,9 @@ class TestProgramGui : public QObject {
  private:
   template <class T>
   T* find(const QString& name) {
-    T* w = host_->findChild<T*>(name);
-    if (!w) qWarning("no widget named %s", qPrintable(name));
-    return w;
+    return rci::ui::test::WindowDriver(host_).find<T>(name);
   }
-  void click(const QString& name) {
-    auto* button = find<QAbstractButton>(name);
-    QVERIFY2(button, qPrintable(name));
-    QVERIFY2(button->isEnabled(), qPrintable(name + " is disabled"));
-    QTest::mouseClick(button, Qt::LeftButton);
-  }
+  void click(const QString& name) { QVERIFY2(rci::ui::test::WindowDriver(host_).click(name), qPrintable(name)); }
   QString text(const QString& name) { return find<QLabel>(name)->text(); }
   const RCI::robot::RobotState& state() { return session_->live().state; }
   int rows() { return find<QTableView>(QStringLiteral("program.list"))->model()->rowCount(); }

@@ -14,6 +14,7 @@
 #include "../planning/allocation_counter.h"
 #include "controller_harness.h"
 #include "motion_profiles.h"
+#include "state_compare.h"
 
 using namespace xmate;
 using namespace xmate::sim;
@@ -25,11 +26,7 @@ using RCI::robot::RobotState;
 
 namespace {
 
-double maxAbsDiff(const std::array<double, 7>& a, const std::array<double, 7>& b) {
-  double m = 0;
-  for (size_t i = 0; i < 7; ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
+using rci_test::maxAbsDiff;
 
 double positionError(const std::array<double, 16>& a, const std::array<double, 16>& b) {
   return (poseOf(a).translation() - poseOf(b).translation()).norm();

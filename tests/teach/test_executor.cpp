@@ -32,16 +32,6 @@ namespace {
 constexpr double kJointTolerance = 1e-4;     // rad
 constexpr double kPositionTolerance = 1e-4;  // m
 
-double distance(const std::array<double, 16>& a, const std::array<double, 16>& b) {
-  return std::sqrt(std::pow(a[3] - b[3], 2) + std::pow(a[7] - b[7], 2) + std::pow(a[11] - b[11], 2));
-}
-
-bool anyError(const RCI::robot::RobotState& s) {
-  for (bool e : s.errors)
-    if (e) return true;
-  return false;
-}
-
 // Pushes the TCP with `force` (N, base frame) while dragging until it has moved `metres`, lets go,
 // waits until the arm is at rest and returns the state there.
 RCI::robot::RobotState dragBy(sim::Server& server, Robot& robot, const std::array<double, 3>& force, double metres) {

@@ -27,6 +27,17 @@ const model::RobotSpec& specOf(const client::Connection& c) { return model::robo
 int responseMs(const client::Connection& c) { return c.options().timeouts.response_ms; }
 int motionResponseMs(const client::Connection& c) { return c.options().timeouts.motion_response_ms; }
 
+// A setter's request: the arguments were checked (`problem`: std::invalid_argument, nothing sent),
+// then connect if needed, send, and turn a refusal into the call's exception (`hint`: why the
+// controller may refuse it).
+template <class Request>
+void sendSetting(client::Connection& c, const std::string& problem, const char* call, const Request& request,
+                 const char* hint = "") {
+  require(problem);
+  c.ensureOpen();
+  requireSetterSuccess(call, c.request(call, request, responseMs(c)), hint);
+}
+
 }  // namespace
 
 Robot::Robot(const std::string& ip, uint16_t port, XmateType type)
@@ -54,59 +65,45 @@ RCI::robot::RobotState Robot::receiveRobotState() {
 // ---- Settings -----------------------------------------------------------------------------------------
 
 void Robot::setCollisionBehavior(const std::array<double, 7>& thresholds) {
-  require(model::checkCollisionThresholds(specOf(*connection_), thresholds));
-  connection_->ensureOpen();
   proto::SetCollisionBehaviorRequest m;
   m.thresholds = thresholds;
-  requireSetterSuccess("setCollisionBehavior", connection_->request("setCollisionBehavior", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkCollisionThresholds(specOf(*connection_), thresholds), "setCollisionBehavior", m);
 }
 
 void Robot::setCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame, bool active) {
-  require(model::checkCartesianLimit(size, frame));
-  connection_->ensureOpen();
   proto::SetCartesianLimitRequest m;
   m.size = size;
   m.frame = frame;
   m.active = active;
-  requireSetterSuccess("setCartesianLimit", connection_->request("setCartesianLimit", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkCartesianLimit(size, frame), "setCartesianLimit", m);
 }
 
 void Robot::setJointImpedance(const std::array<double, 7>& K_theta) {
-  require(model::checkJointImpedance(specOf(*connection_), K_theta));
-  connection_->ensureOpen();
   proto::SetJointImpedanceRequest m;
   m.stiffness = K_theta;
-  requireSetterSuccess("setJointImpedance", connection_->request("setJointImpedance", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkJointImpedance(specOf(*connection_), K_theta), "setJointImpedance", m);
 }
 
 void Robot::setCartesianImpedance(const std::array<double, 6>& K_x) {
-  require(model::checkCartesianImpedance(K_x));
-  connection_->ensureOpen();
   proto::SetCartesianImpedanceRequest m;
   m.stiffness = K_x;
-  requireSetterSuccess("setCartesianImpedance",
-                       connection_->request("setCartesianImpedance", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkCartesianImpedance(K_x), "setCartesianImpedance", m);
 }
 
 void Robot::setCoor(const std::array<double, 16>& F_T_EE) {
-  require(model::checkToolFrame(F_T_EE));
-  connection_->ensureOpen();
   proto::SetCoorRequest m;
   m.flange_to_tool = F_T_EE;
-  requireSetterSuccess("setCoor", connection_->request("setCoor", m, responseMs(*connection_)),
-                       " (the tool cannot change during a motion)");
+  sendSetting(*connection_, model::checkToolFrame(F_T_EE), "setCoor", m, " (the tool cannot change during a motion)");
   connection_->updateRemembered([&](client::Connection::Remembered& r) { r.tool = F_T_EE; });
 }
 
 void Robot::setLoad(double mass, const std::array<double, 3>& center, const std::array<double, 9>& inertia) {
-  require(model::checkLoad(specOf(*connection_), mass, center, inertia));
-  connection_->ensureOpen();
   proto::SetLoadRequest m;
   m.mass = mass;
   m.center = center;
   m.inertia = inertia;
-  requireSetterSuccess("setLoad", connection_->request("setLoad", m, responseMs(*connection_)),
-                       " (the load cannot change during a motion)");
+  sendSetting(*connection_, model::checkLoad(specOf(*connection_), mass, center, inertia), "setLoad", m,
+              " (the load cannot change during a motion)");
   connection_->updateRemembered([&](client::Connection::Remembered& r) {
     r.load_mass = mass;
     r.load_center = center;
@@ -115,21 +112,17 @@ void Robot::setLoad(double mass, const std::array<double, 3>& center, const std:
 }
 
 void Robot::setFilters(double joint_hz, double cartesian_hz, double torque_hz) {
-  require(model::checkFilters(joint_hz, cartesian_hz, torque_hz));
-  connection_->ensureOpen();
   proto::SetFiltersRequest m;
   m.joint_hz = joint_hz;
   m.cartesian_hz = cartesian_hz;
   m.torque_hz = torque_hz;
-  requireSetterSuccess("setFilters", connection_->request("setFilters", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkFilters(joint_hz, cartesian_hz, torque_hz), "setFilters", m);
 }
 
 void Robot::setCartImpDesiredTau(const std::array<double, 6>& tau) {
-  require(model::checkDesiredWrench(tau));
-  connection_->ensureOpen();
   proto::SetCartImpDesiredTauRequest m;
   m.tau = tau;
-  requireSetterSuccess("setCartImpDesiredTau", connection_->request("setCartImpDesiredTau", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkDesiredWrench(tau), "setCartImpDesiredTau", m);
 }
 
 bool Robot::setMotorPower(int state) {
@@ -153,13 +146,12 @@ int Robot::getMotorState() {
 }
 
 bool Robot::setDO(RCI::robot::DOSIGNAL signal, bool state) {
-  if (uint8_t(signal) > uint8_t(RCI::robot::DOSIGNAL::DO1_1))
-    throw std::invalid_argument("setDO: signal = " + std::to_string(int(signal)) + " is not one of DO0_0..DO1_1");
-  connection_->ensureOpen();
   proto::SetDORequest m;
   m.signal = uint8_t(signal);
   m.state = state;
-  requireSetterSuccess("setDO", connection_->request("setDO", m, responseMs(*connection_)));
+  const bool known = uint8_t(signal) <= uint8_t(RCI::robot::DOSIGNAL::DO1_1);
+  sendSetting(*connection_,
+              known ? "" : "setDO: signal = " + std::to_string(int(signal)) + " is not one of DO0_0..DO1_1", "setDO", m);
   return true;
 }
 
@@ -174,22 +166,18 @@ bool Robot::getDI(RCI::robot::DISIGNAL signal) {
 
 void Robot::setJointLimit(const std::array<double, 7>& upper_deg, const std::array<double, 7>& lower_deg,
                           bool auto_limit) {
-  require(model::checkSoftLimits(specOf(*connection_), upper_deg, lower_deg));
-  connection_->ensureOpen();
   proto::SetJointLimitRequest m;
   m.upper = upper_deg;
   m.lower = lower_deg;
   m.auto_limit = auto_limit;
-  requireSetterSuccess("setJointLimit", connection_->request("setJointLimit", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkSoftLimits(specOf(*connection_), upper_deg, lower_deg), "setJointLimit", m);
 }
 
 void Robot::setFcCoor(const std::array<double, 16>& frame, int fc_type) {
-  require(model::checkForceFrame(frame, fc_type));
-  connection_->ensureOpen();
   proto::SetFcCoorRequest m;
   m.frame = frame;
   m.type = uint8_t(fc_type - 1);  // API 1 world, 2 tool, 3 path -> wire 0..2
-  requireSetterSuccess("setFcCoor", connection_->request("setFcCoor", m, responseMs(*connection_)));
+  sendSetting(*connection_, model::checkForceFrame(frame, fc_type), "setFcCoor", m);
 }
 
 void Robot::startDrag(int drag_space, int drag_type) {
