@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include <xmate/joint_motion.h>
+#include <xmate/rate_limiting.h>
 #include <xmate/robot.h>
 
 #include "client/connection.h"
@@ -36,6 +37,8 @@ class TestControlLoop : public QObject {
   void nonHomogeneousPoseIsInvalidArgument();
   void samplesAndCountersFollowTheRun();
   void slowCallerBetweenStartMoveAndControlLosesNothing();
+  void rateLimiterKeepsCommandsWithinTheLimits();
+  void rateLimiterLetsAStreamWithAJumpFinish();
 };
 
 void TestControlLoop::jointCallbackReachesTarget() {
@@ -270,4 +273,105 @@ void TestControlLoop::slowCallerBetweenStartMoveAndControlLosesNothing() {
 }
 
 QTEST_APPLESS_MAIN(TestControlLoop)
+// JointRateLimiter alone, against the controller's own difference quotients: whatever the targets do
+// (steps of every size, back and forth, noise), the commands stay within the bounds, a target
+// within the bounds passes unchanged, and a target that stops is reached.
+void TestControlLoop::rateLimiterKeepsCommandsWithinTheLimits() {
+  const JointRateLimits limits = ratedJointRateLimits(XMATE7_PRO, 1.0);
+  JointRateLimiter limiter(limits);
+  RobotState s{};
+  s.q_c = {0.1, 0.2, -0.3, 1.0, 0.0, 0.5, 0.0};
+  const std::array<double, 7> start = s.q_c;
+  uint32_t noise = 12345;
+  double worst_v = 0, worst_a = 0, worst_j = 0;  // largest use of each bound, as a fraction of it
+  for (int k = 0; k < 6000; ++k) {
+    std::array<double, 7> desired = start;
+    const double step = (k / 500) % 2 == 0 ? 0.3 : -0.2;  // targets that jump every 0.5 s
+    noise = noise * 1664525u + 1013904223u;
+    for (size_t i = 0; i < 7; ++i) desired[i] += step * (1 + 0.1 * double(i)) + 1e-4 * double(noise % 100);
+    const std::array<double, 7> q = limiter.limit(desired, s);
+    for (size_t i = 0; i < 7; ++i) {
+      const double v = (q[i] - s.q_c[i]) / 0.001, a = (v - s.dq_c[i]) / 0.001, j = (a - s.ddq_c[i]) / 0.001;
+      worst_v = std::max(worst_v, std::abs(v) / limits.velocity[i]);
+      worst_a = std::max(worst_a, std::abs(a) / limits.acceleration[i]);
+      worst_j = std::max(worst_j, std::abs(j) / limits.jerk[i]);
+      s.q_c[i] = q[i];
+      s.dq_c[i] = v;
+      s.ddq_c[i] = a;
+    }
+  }
+  qInfo("largest share of the bounds used: velocity %.6f, acceleration %.6f, jerk %.6f", worst_v, worst_a, worst_j);
+  QVERIFY(worst_v <= 1 + 1e-9 && worst_a <= 1 + 1e-9 && worst_j <= 1 + 1e-9);
+  QVERIFY(worst_v > 0.99);  // the steps are large enough to need the bounds
+
+  // Held still: a target that does not move any more is reached and kept.
+  std::array<double, 7> goal = s.q_c;
+  goal[0] += 0.05;
+  for (int k = 0; k < 3000; ++k) {
+    const std::array<double, 7> q = limiter.limit(goal, s);
+    for (size_t i = 0; i < 7; ++i) {
+      const double v = (q[i] - s.q_c[i]) / 0.001;
+      s.ddq_c[i] = (v - s.dq_c[i]) / 0.001;
+      s.dq_c[i] = v;
+      s.q_c[i] = q[i];
+    }
+  }
+  QVERIFY2(maxAbsDiff(s.q_c, goal) < 1e-9, qPrintable(QString::number(maxAbsDiff(s.q_c, goal))));
+
+  // A smooth motion well within the bounds passes unchanged.
+  RobotState smooth{};
+  smooth.q_c = start;
+  JointRateLimiter smooth_limiter(limits);
+  double changed = 0;
+  for (int k = 1; k < 2000; ++k) {
+    std::array<double, 7> desired = start;
+    desired[1] += 0.05 * (1 - std::cos(M_PI * k / 2000.0));
+    const std::array<double, 7> q = smooth_limiter.limit(desired, smooth);
+    changed = std::max(changed, maxAbsDiff(q, desired));
+    const double v = (q[1] - smooth.q_c[1]) / 0.001;
+    smooth.ddq_c[1] = (v - smooth.dq_c[1]) / 0.001;
+    smooth.dq_c[1] = v;
+    smooth.q_c = q;
+  }
+  QVERIFY2(changed < 1e-12, qPrintable(QString::number(changed)));
+  QVERIFY_THROWS_EXCEPTION(std::invalid_argument, ratedJointRateLimits(XMATE7_PRO, 1.5));
+}
+
+// On the simulator: a stream with a 3 mrad jump in the middle makes the controller stop the
+// motion; through JointRateLimiter the same stream finishes at its target without an error bit.
+void TestControlLoop::rateLimiterLetsAStreamWithAJumpFinish() {
+  auto stream = [](Robot& robot, bool limited) {
+    JointRateLimiter limiter(ratedJointRateLimits(XMATE7_PRO));
+    std::array<double, 7> start{};
+    int64_t first = -1;
+    robot.startMove(CM::kJointPosition, MM::kJointPosition);
+    robot.Control(JointControl([&](RobotState s) -> JointPositions {
+      if (first < 0) {
+        first = int64_t(s.message_id);
+        start = s.q_c;
+      }
+      const double t = double(int64_t(s.message_id) - first) * 0.001;  // elapsed controller time
+      std::array<double, 7> desired = start;
+      desired[0] += 0.05 * (1 - std::cos(M_PI * std::min(t, 1.0))) / 2 + (t >= 0.5 ? 0.003 : 0.0);
+      JointPositions out{limited ? limiter.limit(desired, s) : desired};
+      return t >= 1.5 ? MotionFinished(out) : out;
+    }));
+    return start;
+  };
+  {
+    auto server = startSim();
+    auto robot = robotFor(*server);
+    robot->receiveRobotState();
+    QVERIFY_THROWS_EXCEPTION(ControlException, stream(*robot, false));
+  }
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  robot->receiveRobotState();
+  const std::array<double, 7> start = stream(*robot, true);
+  std::array<double, 7> goal = start;
+  goal[0] += 0.053;
+  QVERIFY(eventually([&] { return maxAbsDiff(robot->receiveRobotState().q, goal) < 1e-4; }, 3000));
+  QVERIFY(!anyError(robot->receiveRobotState()));
+}
+
 #include "test_control_loop.moc"
