@@ -417,6 +417,8 @@ void TestExecutor::anotherToolIsRefusedNamingTheInstruction() {
   const std::array<double, 16> longer{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0.1, 0, 0, 0, 1};
 
   robot->setCoor(longer);
+  // The states show the new TCP from the controller's next cycle on.
+  QVERIFY(eventually([&] { return distance(robot->receiveRobotState().toolTobase_pos_m, before.toolTobase_pos_m) > 0.09; }));
   Executor executor;
   RunReport report = executor.run(*robot, program);
   QCOMPARE(report.outcome, RunState::kRefused);
@@ -427,6 +429,7 @@ void TestExecutor::anotherToolIsRefusedNamingTheInstruction() {
 
   // The right tool again: the pre-flight passes; changed during a WAIT, the MOVEL after it fails.
   robot->setCoor(kIdentityPose);
+  QVERIFY(eventually([&] { return distance(robot->receiveRobotState().toolTobase_pos_m, before.toolTobase_pos_m) < 1e-6; }));
   Instruction wait;
   wait.type = InstructionType::kWait;
   wait.ms = 300;
