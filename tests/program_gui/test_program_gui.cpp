@@ -518,7 +518,7 @@ void TestProgramGui::anotherToolRefusesTeaching() {
   click(QStringLiteral("program.record"));
   QCOMPARE(rows(), 1);  // refused
   const QString status = text(QStringLiteral("program.status"));
-  QVERIFY2(status.startsWith(QStringLiteral("Record: the robot's TCP is 100.0 mm")) &&
+  QVERIFY2(status.startsWith(QStringLiteral("Record: the robot's tool point is 100.0 mm")) &&
                status.contains(QStringLiteral("press New in the Program panel")),
            qPrintable(status));
 

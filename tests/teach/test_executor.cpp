@@ -423,7 +423,7 @@ void TestExecutor::anotherToolIsRefusedNamingTheInstruction() {
   RunReport report = executor.run(*robot, program);
   QCOMPARE(report.outcome, RunState::kRefused);
   QCOMPARE(report.problems.size(), size_t(1));
-  QVERIFY2(QString::fromStdString(report.message).contains("instruction 1 (MOVEL \"down\"): the robot's TCP is 100.0 mm"),
+  QVERIFY2(QString::fromStdString(report.message).contains("instruction 1 (MOVEL \"down\"): the robot's tool point is 100.0 mm"),
            report.message.c_str());
   QCOMPARE(server->status().counters.commands_received, uint64_t(0));
 
@@ -441,7 +441,7 @@ void TestExecutor::anotherToolIsRefusedNamingTheInstruction() {
   }
   QCOMPARE(report.outcome, RunState::kFailed);
   QCOMPARE(report.failed_instruction, 1L);
-  QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 2 (MOVEL \"down\"): the robot's TCP is 100.0 mm"),
+  QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 2 (MOVEL \"down\"): the robot's tool point is 100.0 mm"),
            report.message.c_str());
   QVERIFY(maxAbsDiff(robot->receiveRobotState().q, before.q) < 1e-6);  // it did not move
 }

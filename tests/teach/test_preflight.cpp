@@ -275,7 +275,7 @@ void TestPreflight::toolOfTheProgramMustMatchTheRobot() {
   QCOMPARE(problems[0].instruction, size_t(1));
   QVERIFY2(problems[0].message.find("instruction 2 (MOVEL") == 0, problems[0].message.c_str());
   QVERIFY2(problems[0].message.find("100.0 mm") != std::string::npos, problems[0].message.c_str());
-  QVERIFY2(problems[0].message.find("(0.0000, 0.0000, 0.1000) m") != std::string::npos, problems[0].message.c_str());
+  QVERIFY2(problems[0].message.find("x, y, z = 0.0000, 0.0000, 0.1000 m") != std::string::npos, problems[0].message.c_str());
   o.tcp = tcpWith(toolAt(0.1, 0.02), kStart);  // turned 1.1 deg
   problems = preflight(p, o);
   QCOMPARE(problems.size(), size_t(1));

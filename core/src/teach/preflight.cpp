@@ -247,12 +247,10 @@ std::string toolMismatchText(const ToolMismatch& m, const Program& program) {
   // R = Rz(rz) Ry(ry) Rx(rx), ry within +-90 deg, as the Tool & payload panel takes it.
   const auto& t = program.tool;  // row-major: R(r, c) = t[4 r + c]
   const double rx = std::atan2(t[9], t[10]), ry = std::asin(std::clamp(-t[8], -1.0, 1.0)), rz = std::atan2(t[4], t[0]);
-  return fmt("the robot's TCP is %.1f mm and %.1f deg away from the TCP of the tool this program was taught with",
+  return fmt("the robot's tool point is %.1f mm and %.1f deg away from the one this program was taught with",
              m.distance * 1000, m.angle * kDeg) +
-         " (allowed: 1 mm and 0.5 deg), so its poses would be reached with another point of the tool; " +
-         fmt("the program's tool is x, y, z = (%.4f, %.4f, %.4f) m", program.tool[3], program.tool[7],
-             program.tool[11]) +
-         fmt(", rx, ry, rz = (%.2f, %.2f, %.2f) deg from the flange (applied as Rz Ry Rx): ", rx * kDeg + 0.0,
+         fmt(" (x, y, z = %.4f, %.4f, %.4f m", program.tool[3], program.tool[7], program.tool[11]) +
+         fmt("; rx, ry, rz = %.2f, %.2f, %.2f deg; at most 1 mm and 0.5 deg allowed): ", rx * kDeg + 0.0,
              ry * kDeg + 0.0, rz * kDeg + 0.0) +
          "set the tool and load the program was taught with, or teach the program again with this tool";
 }

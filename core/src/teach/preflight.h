@@ -78,8 +78,9 @@ ToolMismatch toolMismatch(const Program& program, const std::array<double, 7>& q
 inline constexpr double kToolMismatchDistance = 1e-3;    // m
 inline constexpr double kToolMismatchAngle = 0.5 / 57.29577951308232;  // rad (0.5 deg)
 bool toolMatches(const ToolMismatch& m);
-// "the robot's TCP is 120.0 mm and 0.0 deg away from the TCP of the tool this program was taught
-// with (...)": the problem text, with the program's TCP and what to do.
+// "the robot's tool point is 120.0 mm and 0.0 deg away from the one this program was taught with
+// (x, y, z = ...)": the problem text, with the program's tool (as the Tool & payload panel takes
+// it: metres, then degrees applied as Rz Ry Rx) and what to do.
 std::string toolMismatchText(const ToolMismatch& m, const Program& program);
 // Whether the instruction's motion depends on the tool: MOVEL, MOVEC, and MOVEJ to a target taught
 // as a pose only.
