@@ -219,6 +219,12 @@ void TestExecutor::pauseAndResumeMidMove() {
                           executor.pause();
                           if (!eventually([&] { return executor.progress().state == RunState::kPaused; })) return;
                           paused_at = executor.progress().fraction;
+                          // The command stands still; the arm catches up with it, then stays.
+                          eventually([&] {
+                            double speed = 0;
+                            for (double v : robot->receiveRobotState().dq_m) speed = std::max(speed, std::abs(v));
+                            return speed < 1e-4;
+                          });
                           q_paused = robot->receiveRobotState().q;
                           std::this_thread::sleep_for(std::chrono::milliseconds(150));
                           q_later = robot->receiveRobotState().q;
