@@ -45,6 +45,23 @@ CLI::Validator wholeNumber(long lo, long hi) {
 
 }  // namespace
 
+// "HOST" or "HOST:PORT" (default_port when left out); UsageError ending in `expected` otherwise.
+HostPort parseHostPort(const std::string& text, uint16_t default_port, const std::string& expected) {
+  HostPort address;
+  address.port = default_port;
+  const auto colon = text.rfind(':');
+  address.host = text.substr(0, colon);
+  if (address.host.empty()) throw UsageError("'" + text + "': no host; " + expected);
+  if (colon != std::string::npos) {
+    const std::string port = text.substr(colon + 1);
+    if (!wholeNumberProblem(port, 1, 65535).empty())
+      throw UsageError("'" + text + "': the port must be a whole number from 1 to 65535, got '" + port + "'; " +
+                       expected);
+    address.port = uint16_t(std::stol(port));
+  }
+  return address;
+}
+
 RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed) {
   const std::string expected = sim_allowed ? "write sim (the in-process simulator) or HOST:PORT, e.g. 127.0.0.1:1337"
                                            : "write HOST:PORT, e.g. 127.0.0.1:1337";
@@ -54,17 +71,26 @@ RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed) {
     target.in_process = true;
     return target;
   }
-  const auto colon = text.rfind(':');
-  target.address.host = text.substr(0, colon);
-  if (target.address.host.empty()) throw UsageError("'" + text + "': no host; " + expected);
-  if (colon != std::string::npos) {
-    const std::string port = text.substr(colon + 1);
-    if (!wholeNumberProblem(port, 1, 65535).empty())
-      throw UsageError("'" + text + "': the port must be a whole number from 1 to 65535, got '" + port + "'; " +
-                       expected);
-    target.address.port = uint16_t(std::stol(port));
-  }
+  target.address = parseHostPort(text, target.address.port, expected);
   return target;
+}
+
+void parseSensorAddress(const std::string& text, FtOptions& options) {
+  const HostPort address = parseHostPort(text, 49152, "write the sensor's HOST or HOST:PORT, e.g. 192.168.1.1");
+  options.host = address.host;
+  options.port = address.port;
+}
+
+CLI::Option* addSensorOption(CLI::App& command, FtOptions& options) {
+  CLI::Option* option = command.add_option_function<std::string>(
+      "--sensor", [&options](const std::string& text) { parseSensorAddress(text, options); },
+      "the sensor's address, HOST or HOST:PORT (port 49152 if left out)");
+  option->type_name("HOST[:PORT]");
+  option->check(parsedBy([](const std::string& text) {
+    FtOptions unused;
+    parseSensorAddress(text, unused);
+  }));
+  return option;
 }
 
 xmate::XmateType parseModel(const std::string& text) {

@@ -74,7 +74,19 @@ struct LoopOptions {
   xmate::XmateType type = xmate::XMATE7_PRO;
 };
 
+struct FtOptions {
+  std::string host;                 // the sensor's IPv4 address
+  uint16_t port = 49152;            // RDT's port
+  long count = 0;                   // 0: until interrupted
+  double counts_per_unit = 1e6;     // counts per N and per Nm (the sensor's configuration)
+};
+// "HOST" or "HOST:PORT" (port 49152 if left out) into options.host/port; UsageError otherwise.
+void parseSensorAddress(const std::string& text, FtOptions& options);
+//   --sensor HOST[:PORT], parsed by parseSensorAddress.
+CLI::Option* addSensorOption(CLI::App& command, FtOptions& options);
+
 int runModel(xmate::XmateType type);         // rci-cli [model NAME]
+int runFt(const FtOptions& options);         // rci-cli ft --sensor HOST[:PORT] [--count N] [--counts-per-unit C]
 int runState(const StateOptions& options);   // rci-cli state --robot HOST:PORT [--count N] [--model NAME]
 int runDoctor();                             // rci-cli doctor
 int runBenchLoop(const LoopOptions& options);  // rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep] [--model NAME]

@@ -55,7 +55,7 @@ std::string explain(const CLI::ParseError& e, const CLI::App& app, const CLI::Ap
     const std::string first = unexpectedArguments(what).front();
     if (!first.empty() && first[0] == '-')
       return (name.empty() ? "" : name + ": ") + "unknown option '" + first + "'";
-    if (command == &app) return "unknown command '" + first + "' (known: model, state, run, doctor, bench, help)";
+    if (command == &app) return "unknown command '" + first + "' (known: model, state, run, doctor, bench, ft, help)";
     if (name == "bench") return "unknown bench '" + first + "' (known: loop, client)";
     return name + ": unexpected argument '" + first + "'";
   }
@@ -154,6 +154,15 @@ int main(int argc, char** argv) {
   CLI::App* client = bench->add_subcommand("client", "the client's cost per cycle (decode, callback, encode, send)");
   addWholeNumberOption(*client, "--cycles", client_cycles, 1000, 100'000'000, "cycles to measure (default 100000)");
 
+  FtOptions ft_options;
+  CLI::App* ft = app.add_subcommand("ft", "read an ATI Net F/T force/torque sensor: Fx Fy Fz (N) and Tx Ty Tz (Nm) per sample");
+  addSensorOption(*ft, ft_options)->required();
+  addWholeNumberOption(*ft, "--count", ft_options.count, 1, 100'000'000, "stop after N samples (default: until Ctrl-C)");
+  ft->add_option("--counts-per-unit", ft_options.counts_per_unit,
+                 "counts per N and per Nm, as the sensor is configured (default 1000000)")
+      ->type_name("C")
+      ->check(CLI::PositiveNumber);
+
   CLI::App* help = app.add_subcommand("help", "this text");
   app.set_version_flag("--version", std::string("rci-cli ") + RCI_VERSION, "Print the version and exit");
 
@@ -185,6 +194,7 @@ int main(int argc, char** argv) {
     if (state->parsed()) return runState(state_options);
     if (run->parsed()) return runRun(run_options);
     if (doctor->parsed()) return runDoctor();
+    if (ft->parsed()) return runFt(ft_options);
     if (loop->parsed()) return runBenchLoop(loop_options);
     if (client->parsed()) return runBenchClient(client_cycles);
     return runModel(model_type);  // `rci-cli` alone or `rci-cli model [NAME]`

@@ -39,7 +39,7 @@ expect 2 "--model: unknown model 'ur5'; choose one of: xmate3_pro, xmate7_pro, x
 expect 2 "NAME: unknown model 'xmate9'" model xmate9
 # Unknown options and commands, extra arguments.
 expect 2 "state: unknown option '--frobnicate'" state --robot 127.0.0.1:1 --frobnicate
-expect 2 "unknown command 'frob' (known: model, state, run, doctor, bench, help)" frob
+expect 2 "unknown command 'frob' (known: model, state, run, doctor, bench, ft, help)" frob
 expect 2 "unknown bench 'fast' (known: loop, client)" bench fast
 expect 2 "model: unexpected argument 'xmate3'" model xmate7 xmate3
 # Missing values and missing required arguments.
@@ -61,6 +61,12 @@ expect 0 "--report FILE" run --help
 expect 0 "--lockstep" bench loop --help
 expect 0 "--count N" state -h
 expect 0 "rci-cli 0." --version
+# ft: the sensor's address and its checks; a sensor that does not answer is a run-time failure.
+expect 2 "--sensor '192.168.1.1:0': the port must be a whole number from 1 to 65535" ft --sensor 192.168.1.1:0
+expect 2 "--sensor is required" ft
+expect 2 "--count takes a whole number from 1 to 100000000, got '0'" ft --sensor 127.0.0.1 --count 0
+expect 0 "--counts-per-unit C" ft --help
+expect 1 "no data from the F/T sensor at 127.0.0.1:9 within 2 s" ft --sensor 127.0.0.1:9 --count 1
 # The default and a model, with --opt=value and --opt value (no robot needed).
 expect 0 "xMate Pro 7 (xmate7_pro), 7 axes"
 expect 0 "xMate 3 (xmate3), 6 axes" model xmate3

@@ -7,8 +7,6 @@
 #include <cctype>
 #include <charconv>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 
 namespace xmate::rsi {
@@ -190,10 +188,7 @@ EthernetConfig parseEthernetConfig(std::string_view text, const std::string& nam
 }
 
 EthernetConfig readEthernetConfig(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ": cannot open the Ethernet config; check the path and that it is readable");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return parseEthernetConfig(text, path);
+  return parseEthernetConfig(readTextFile(path, "Ethernet config"), path);
 }
 
 const std::string* Object::parameter(std::string_view name) const {
@@ -280,11 +275,6 @@ Context parseContext(std::string_view text, const std::string& name) {
   return c;
 }
 
-Context readContext(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ": cannot open the RSI context; check the path and that it is readable");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return parseContext(text, path);
-}
+Context readContext(const std::string& path) { return parseContext(readTextFile(path, "RSI context"), path); }
 
 }  // namespace xmate::rsi

@@ -85,12 +85,14 @@ XmlElement parseXml(std::string_view text, const std::string& name) {
   return std::move(builder.root);
 }
 
-XmlElement readXmlFile(const std::string& path) {
+std::string readTextFile(const std::string& path, const char* what) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ": cannot open the file; check the path and that it is readable");
+  if (!in) throw ConfigError(path + ": cannot open the " + what + "; check the path and that it is readable");
   std::ostringstream text;
   text << in.rdbuf();
-  return parseXml(text.str(), path);
+  return text.str();
 }
+
+XmlElement readXmlFile(const std::string& path) { return parseXml(readTextFile(path, "file"), path); }
 
 }  // namespace xmate::rsi

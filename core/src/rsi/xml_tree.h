@@ -31,6 +31,9 @@ struct XmlElement {
   const XmlElement* child(std::string_view child_name) const;
 };
 
+// The whole file; ConfigError "PATH: cannot open the <what>; ..." if it cannot be read.
+std::string readTextFile(const std::string& path, const char* what);
+
 // Reads and parses `path` (UTF-8, a byte-order mark allowed). Throws ConfigError naming the file
 // and line of a syntax error, or saying why the file cannot be read.
 XmlElement readXmlFile(const std::string& path);
