@@ -12,6 +12,7 @@
 
 #include "net/realtime.h"
 #include "options.h"
+#include "sim/ft_sensor.h"
 #include "sim/server.h"
 #include "sim/server_control.h"
 
@@ -68,12 +69,24 @@ int run(const rcisim::Options& o) {
     control->start();
   }
 
+  std::unique_ptr<xmate::sim::SimulatedFtSensor> ft_sensor;
+  if (o.ft_sensor_port) {
+    xmate::sim::FtSensorConfig ft;
+    ft.bind_ip = o.bind_ip;
+    ft.port = *o.ft_sensor_port;
+    ft_sensor = std::make_unique<xmate::sim::SimulatedFtSensor>(ft);
+    ft_sensor->start();
+  }
+
   if (o.print_port) std::cout << server.port() << '\n';
   const xmate::sim::ServerStatus st = server.status();
   std::cout << "rci-sim: " << o.model->display_name << " on " << o.bind_ip << ':' << server.port() << ", "
             << xmate::sim::toString(st.clock) << ", " << st.realtime << '\n';
   if (control)
     std::cout << "rci-sim: control port on " << o.control_bind_ip << ':' << control->port() << " (type help)\n";
+  if (ft_sensor)
+    std::cout << "rci-sim: F/T sensor (Net F/T, RDT) on " << o.bind_ip << ':' << ft_sensor->port()
+              << ", reading a zero wrench\n";
   std::cout.flush();
 
   int signal_number = 0;

@@ -85,6 +85,12 @@ void describe(CLI::App& app, Options& o, std::string& model, long& control_port)
                  "serve the control port (scene events, packet faults; 0 = free port)")
       ->type_name("P")
       ->check(wholeNumber(0, 65535));
+  app.add_option_function<long>(
+         "--ft-sensor", [&o](long port) { o.ft_sensor_port = uint16_t(port); },
+         "also serve a simulated ATI Net F/T sensor (RDT over UDP) on this port of --bind, reading a zero "
+         "wrench (0 = free port; a real sensor uses 49152)")
+      ->type_name("P")
+      ->check(wholeNumber(0, 65535));
   app.add_option("--control-bind", o.control_bind_ip, "address of the control port (default 127.0.0.1)")
       ->type_name("IP")
       ->check(ipv4Address());

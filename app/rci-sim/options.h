@@ -19,6 +19,7 @@ struct Options {
   int lockstep_timeout_ms = 200;
   std::optional<uint16_t> control_port;
   std::string control_bind_ip = "127.0.0.1";
+  std::optional<uint16_t> ft_sensor_port;  // --ft-sensor: serve a simulated ATI Net F/T sensor (RDT)
   bool loopback_io = false;
   bool motors_on = false;
   bool print_port = false;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// ft::NetFtClient against a fake Net F/T sensor on loopback: the request and record bytes are the
+// ft::NetFtClient against the simulated Net F/T sensor on loopback: the request and record bytes are the
 // RDT layout; the client asks the sensor to stream, converts counts to N and Nm, counts records lost
 // on the way, biases on request, notices when the sensor falls silent and asks it again, and tells
 // it to stop when stopped.
@@ -11,63 +11,24 @@
 
 #include "ft/netft.h"
 #include "net/udp_socket.h"
+#include "sim/ft_sensor.h"
 
 using namespace xmate;
 using namespace xmate::ft;
 
 namespace {
 
-// A sensor that streams records after each start request until told to stop (or `pause` is set).
-class FakeSensor {
- public:
-  FakeSensor() {
-    socket_.bind("127.0.0.1", 0);
-    thread_ = std::thread([this] { run(); });
+// The simulated sensor rci-sim serves, on a free loopback port, reading 2.5 N, -1 N, 0.25 Nm, -0.05 Nm.
+struct FakeSensor : sim::SimulatedFtSensor {
+  FakeSensor() : sim::SimulatedFtSensor(config()) {
+    setWrench({2.5, -1.0, 0, 0.25, 0, -0.05});
+    start();
   }
-  ~FakeSensor() {
-    quit_ = true;
-    thread_.join();
+  static sim::FtSensorConfig config() {
+    sim::FtSensorConfig c;
+    c.port = 0;
+    return c;
   }
-  uint16_t port() const { return socket_.localPort(); }
-  std::atomic<int> starts{0}, stops{0};
-  std::atomic<bool> pause{false};
-  std::atomic<int32_t> fx_counts{2'500'000};  // 2.5 N at 1e6 counts per N
-
- private:
-  void run() {
-    net::Endpoint client;
-    bool streaming = false;
-    uint32_t sequence = 0;
-    while (!quit_) {
-      uint8_t request[16];
-      net::Endpoint from;
-      const long n = socket_.receiveFrom(request, sizeof request, &from, 1000);  // 1 ms: about 1 kHz
-      if (n == long(kRequestBytes) && request[0] == 0x12 && request[1] == 0x34) {
-        const uint16_t command = uint16_t(request[2] << 8 | request[3]);
-        if (command == kCommandStartStreaming) {
-          ++starts;
-          client = from;
-          streaming = true;
-        } else if (command == kCommandStop) {
-          ++stops;
-          streaming = false;
-        }
-      }
-      if (!streaming || pause) continue;
-      ++sequence;
-      if (sequence >= 50 && sequence <= 52) continue;  // three records lost on the way
-      RdtRecord r;
-      r.rdt_sequence = sequence;
-      r.ft_sequence = sequence * 4;
-      r.counts = {fx_counts.load(), -1'000'000, 0, 250'000, 0, -50'000};
-      uint8_t out[kRecordBytes];
-      encodeRecord(r, out);
-      socket_.sendTo(client, out, sizeof out);
-    }
-  }
-  net::UdpSocket socket_;
-  std::thread thread_;
-  std::atomic<bool> quit_{false};
 };
 
 NetFtOptions toSensor(uint16_t port) {
@@ -113,6 +74,7 @@ void TestNetFt::rdtBytes() {
 
 void TestNetFt::streamsConvertsAndCountsLosses() {
   FakeSensor sensor;
+  sensor.dropRecords(50, 3);  // three records lost on the way
   NetFtClient client(toSensor(sensor.port()));
   client.start();
   QTRY_VERIFY_WITH_TIMEOUT(client.streaming(), 5000);
@@ -127,7 +89,7 @@ void TestNetFt::streamsConvertsAndCountsLosses() {
   QVERIFY2(client.statistics().lost >= 3, qPrintable(QString::number(client.statistics().lost)));
   QCOMPARE(client.statistics().malformed, uint64_t(0));
   client.stop();
-  QTRY_COMPARE_WITH_TIMEOUT(sensor.stops.load(), 1, 5000);
+  QTRY_COMPARE_WITH_TIMEOUT(sensor.stopRequests(), 1, 5000);
   QVERIFY(!client.streaming());
 }
 
@@ -139,15 +101,15 @@ void TestNetFt::biasAndSilence() {
   client.bias();
   Wrench w;
   QTRY_VERIFY_WITH_TIMEOUT(client.latest(w) && w.values[0] == 0 && w.values[1] == 0, 5000);
-  sensor.fx_counts = 3'000'000;  // someone pushes: +0.5 N over the bias
+  sensor.setWrench({3.0, -1.0, 0, 0.25, 0, -0.05});  // someone pushes: +0.5 N over the bias
   QTRY_VERIFY_WITH_TIMEOUT(client.latest(w) && std::abs(w.values[0] - 0.5) < 1e-12, 5000);
   client.clearBias();
   QTRY_VERIFY_WITH_TIMEOUT(client.latest(w) && w.values[0] == 3.0, 5000);
   // The sensor falls silent: the client notices and asks it to stream again.
-  sensor.pause = true;
+  sensor.setSilent(true);
   QTRY_VERIFY_WITH_TIMEOUT(!client.streaming(), 5000);
-  QTRY_VERIFY_WITH_TIMEOUT(sensor.starts.load() >= 2, 5000);
-  sensor.pause = false;
+  QTRY_VERIFY_WITH_TIMEOUT(sensor.startRequests() >= 2, 5000);
+  sensor.setSilent(false);
   QTRY_VERIFY_WITH_TIMEOUT(client.streaming(), 5000);
 }
 

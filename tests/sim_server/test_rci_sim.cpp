@@ -6,6 +6,7 @@
 
 #include <csignal>
 
+#include "ft/netft.h"
 #include "raw_client.h"
 
 using namespace simtest;
@@ -93,6 +94,29 @@ class TestRciSim : public QObject {
     ::kill(pid_t(sim.processId()), SIGINT);
     QVERIFY(sim.waitForFinished(20000));
     QCOMPARE(sim.exitCode(), 0);
+  }
+
+  void ftSensorIsAnnouncedAndStreams() {
+    QProcess sim;
+    sim.start(RCI_SIM_PATH, {"--port", "0", "--print-port", "--ft-sensor", "0", "--no-realtime"});
+    QVERIFY(sim.waitForStarted());
+    readLine(sim);
+    QVERIFY(readLine(sim).startsWith("rci-sim: xMate Pro 7 on 127.0.0.1:"));
+    const QString ft_line = readLine(sim);
+    const QRegularExpressionMatch m = QRegularExpression(
+        "^rci-sim: F/T sensor \\(Net F/T, RDT\\) on 127\\.0\\.0\\.1:(\\d+), reading a zero wrench$").match(ft_line);
+    QVERIFY2(m.hasMatch(), qPrintable(ft_line));
+    ft::NetFtOptions options;
+    options.host = "127.0.0.1";
+    options.port = uint16_t(m.captured(1).toUInt());
+    ft::NetFtClient client(options);
+    client.start();
+    QTRY_VERIFY_WITH_TIMEOUT(client.statistics().records > 10, 10000);
+    ft::Wrench w;
+    QVERIFY(client.latest(w));
+    QVERIFY(w.values == (std::array<double, 6>{}));
+    client.stop();
+    QCOMPARE(terminate(sim), 0);
   }
 
   void unknownModelListsTheFour() {
