@@ -17,6 +17,7 @@ void put16(uint8_t* p, uint16_t v) {
   p[0] = uint8_t(v >> 8);
   p[1] = uint8_t(v);
 }
+uint16_t get16(const uint8_t* p) { return uint16_t(p[0] << 8 | p[1]); }
 void put32(uint8_t* p, uint32_t v) {
   for (int i = 0; i < 4; ++i) p[i] = uint8_t(v >> (24 - 8 * i));
 }
@@ -30,6 +31,12 @@ void encodeRequest(uint16_t command, uint32_t count, uint8_t out[kRequestBytes])
   put16(out, kRdtHeader);
   put16(out + 2, command);
   put32(out + 4, count);
+}
+
+bool decodeRequest(const uint8_t* data, size_t size, uint16_t& command) {
+  if (size != kRequestBytes || get16(data) != kRdtHeader) return false;
+  command = get16(data + 2);
+  return true;
 }
 
 bool decodeRecord(const uint8_t* data, size_t size, RdtRecord& out) {

@@ -33,6 +33,8 @@ struct RdtRecord {
   std::array<int32_t, 6> counts{};  // Fx Fy Fz Tx Ty Tz
 };
 void encodeRequest(uint16_t command, uint32_t count, uint8_t out[kRequestBytes]);
+// False unless exactly kRequestBytes starting with kRdtHeader (for simulated sensors).
+bool decodeRequest(const uint8_t* data, size_t size, uint16_t& command);
 // False unless exactly kRecordBytes.
 bool decodeRecord(const uint8_t* data, size_t size, RdtRecord& out);
 void encodeRecord(const RdtRecord& record, uint8_t out[kRecordBytes]);  // for simulated sensors

@@ -133,13 +133,10 @@ struct RobDecoder::Parse {
   }
   void store(int slot, std::string_view value) {
     const Slot& s = d.slots_[size_t(slot)];
-    if (s.type == ValueType::kString) {
-      const size_t n = std::min(value.size(), kMaxText - 1);
-      std::memcpy(d.texts_[size_t(slot)].data(), value.data(), n);
-      d.text_lengths_[size_t(slot)] = uint8_t(n);
-    } else if (!parseValue(value, s.type, values[size_t(slot)])) {
+    if (s.type == ValueType::kString)
+      d.texts_[size_t(slot)].assign(value);
+    else if (!parseValue(value, s.type, values[size_t(slot)]))
       return fail("a value is not a number of the type the Ethernet config gives it");
-    }
     seen[size_t(slot)] = true;
   }
 };
@@ -199,7 +196,6 @@ RobDecoder::RobDecoder(const EthernetConfig& config)
       values_(slots_.size(), 0.0),
       staged_(slots_.size(), 0.0),
       texts_(slots_.size()),
-      text_lengths_(slots_.size(), 0),
       seen_(slots_.size(), false),
       staged_seen_(slots_.size(), false),
       arena_(std::make_unique<Arena>()) {}
@@ -211,7 +207,7 @@ int RobDecoder::slot(std::string_view element, std::string_view attribute) const
 }
 
 std::string_view RobDecoder::text(int slot) const {
-  return {texts_[size_t(slot)].data(), text_lengths_[size_t(slot)]};
+  return texts_[size_t(slot)].view();
 }
 
 bool RobDecoder::onType(std::string_view type) {
@@ -280,7 +276,6 @@ SenEncoder::SenEncoder(const EthernetConfig& config, int precision)
     : sentype_(config.sentype), precision_(std::clamp(precision, 0, 9)), slots_(slotsOf(config.receive)) {
   values_.assign(slots_.size(), 0.0);
   texts_.resize(slots_.size());
-  text_lengths_.assign(slots_.size(), 0);
   for (size_t i = 0; i < slots_.size(); ++i) {
     auto group = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) { return g.element == slots_[i].element; });
     if (group == groups_.end()) {
@@ -295,16 +290,15 @@ int SenEncoder::slot(std::string_view element, std::string_view attribute) const
   return findSlot(slots_, element, attribute);
 }
 
-void SenEncoder::setText(int slot, std::string_view text) {
-  const size_t n = std::min(text.size(), kMaxText - 1);
-  std::memcpy(texts_[size_t(slot)].data(), text.data(), n);
-  text_lengths_[size_t(slot)] = uint8_t(n);
+void SenEncoder::setText(int slot, std::string_view text) { texts_[size_t(slot)].assign(text); }
+
+void TextValue::assign(std::string_view text) {
+  length = uint8_t(std::min(text.size(), kMaxText - 1));
+  std::memcpy(bytes.data(), text.data(), length);
 }
 
-namespace {
-
 // Appends to a fixed buffer; remembers when it ran out.
-struct Writer {
+struct SenEncoder::Writer {
   char* out;
   size_t capacity;
   size_t length = 0;
@@ -342,7 +336,13 @@ struct Writer {
   }
 };
 
-}  // namespace
+
+void SenEncoder::putValue(Writer& w, int slot) const {
+  if (slots_[size_t(slot)].type == ValueType::kString)
+    w.putEscaped(texts_[size_t(slot)].view());
+  else
+    w.putNumber(values_[size_t(slot)], slots_[size_t(slot)].type, precision_);
+}
 
 size_t SenEncoder::encode(std::string_view ipoc_text, char* out, size_t capacity) const {
   Writer w{out, std::min(capacity, kMaxSenBytes)};
@@ -354,11 +354,7 @@ size_t SenEncoder::encode(std::string_view ipoc_text, char* out, size_t capacity
     w.put(g.element);
     if (g.text) {
       w.put(">");
-      const int s = g.members.front();
-      if (slots_[size_t(s)].type == ValueType::kString)
-        w.putEscaped({texts_[size_t(s)].data(), text_lengths_[size_t(s)]});
-      else
-        w.putNumber(values_[size_t(s)], slots_[size_t(s)].type, precision_);
+      putValue(w, g.members.front());
       w.put("</");
       w.put(g.element);
       w.put(">");
@@ -368,10 +364,7 @@ size_t SenEncoder::encode(std::string_view ipoc_text, char* out, size_t capacity
       w.put(" ");
       w.put(slots_[size_t(s)].attribute);
       w.put("=\"");
-      if (slots_[size_t(s)].type == ValueType::kString)
-        w.putEscaped({texts_[size_t(s)].data(), text_lengths_[size_t(s)]});
-      else
-        w.putNumber(values_[size_t(s)], slots_[size_t(s)].type, precision_);
+      putValue(w, s);
       w.put("\"");
     }
     w.put(" />");

@@ -25,6 +25,14 @@ inline constexpr size_t kMaxDatagramBytes = 8192;
 inline constexpr size_t kMaxSenBytes = 1024;
 inline constexpr size_t kMaxText = 96;  // a STRING value or an IPOC token, bytes
 
+// A STRING value, kept in place (no allocation): at most kMaxText - 1 bytes, longer text is cut.
+struct TextValue {
+  std::array<char, kMaxText> bytes{};
+  uint8_t length = 0;
+  void assign(std::string_view text);
+  std::string_view view() const { return {bytes.data(), length}; }
+};
+
 // One value of a datagram: element <Name>, attribute Attr (empty: the element's text).
 struct Slot {
   std::string element;
@@ -76,8 +84,7 @@ class RobDecoder {
   std::vector<Slot> slots_;
   std::vector<double> values_;
   std::vector<double> staged_;  // the datagram being parsed; swapped with values_ when it parsed
-  std::vector<std::array<char, kMaxText>> texts_;
-  std::vector<uint8_t> text_lengths_;
+  std::vector<TextValue> texts_;
   std::vector<bool> seen_;
   std::vector<bool> staged_seen_;
   std::unique_ptr<struct Arena> arena_;
@@ -110,6 +117,8 @@ class SenEncoder {
   size_t encode(std::string_view ipoc_text, char* out, size_t capacity) const;
 
  private:
+  struct Writer;                               // the output buffer of encode() (codec.cpp)
+  void putValue(Writer& w, int slot) const;   // a slot's value as datagram text
   struct Group {  // one datagram element and its slots, in config order
     std::string element;
     bool text = false;
@@ -120,8 +129,7 @@ class SenEncoder {
   std::vector<Slot> slots_;
   std::vector<Group> groups_;
   std::vector<double> values_;
-  std::vector<std::array<char, kMaxText>> texts_;
-  std::vector<uint8_t> text_lengths_;
+  std::vector<TextValue> texts_;
 };
 
 }  // namespace xmate::rsi

@@ -50,8 +50,8 @@ void SimulatedFtSensor::run() {
     uint8_t request[16];
     net::Endpoint from;
     const long n = socket_.receiveFrom(request, sizeof request, &from, streaming ? wait_us : 10'000);
-    if (n == long(ft::kRequestBytes) && request[0] == 0x12 && request[1] == 0x34) {
-      const uint16_t command = uint16_t(request[2] << 8 | request[3]);
+    uint16_t command = 0;
+    if (n > 0 && ft::decodeRequest(request, size_t(n), command)) {
       if (command == ft::kCommandStartStreaming) {
         ++starts_;
         client = from;
