@@ -65,7 +65,7 @@ double cpuShare(double seconds, Body during) {
 // speed: the arm is always moving, for about 1.5 s per instruction.
 Program backAndForth(const std::array<double, 7>& start, int moves) {
   Program program;
-  program.robot = xmate::XMATE7_PRO;
+  program.robot = &xmate::model::robotSpec(xmate::XMATE7_PRO);
   std::array<double, 7> away = start;
   away[0] += 0.6;
   away[1] += 0.4;

@@ -122,7 +122,7 @@ void TestMotionOwnership::openWindow(bool lockstep) {
 
   // Two MOVEJs of J1 (0.6 rad there and back at 30 % speed: each takes seconds).
   xmate::teach::Program program;
-  program.robot = session_->target().type;
+  program.robot = &xmate::model::robotSpec(session_->target().type);
   xmate::teach::Target there, back;
   there.has_q = back.has_q = true;
   there.q = back.q = session_->live().state.q;

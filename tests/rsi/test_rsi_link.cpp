@@ -12,58 +12,13 @@
 #include <string>
 #include <thread>
 
-#include "net/udp_socket.h"
-#include "rsi/config.h"
 #include "rsi/link.h"
+#include "rsi_test_support.h"
 
 using namespace xmate;
 using namespace xmate::rsi;
+using namespace xmate::rsi::testing;
 
-namespace {
-
-EthernetConfig sampleConfig() {
-  return readEthernetConfig(qEnvironmentVariable("RCI_DATA_DIR").toStdString() + "/resources/rsi/RSI_EthernetConfig.xml");
-}
-
-LinkOptions loopback(CorrectionMode mode = CorrectionMode::kAbsolute) {
-  LinkOptions o;
-  o.bind_ip = "127.0.0.1";
-  o.port = 0;  // a free port
-  o.mode = mode;
-  o.realtime = false;
-  o.silence_ms = 1000;  // a loaded machine may pause between two exchanges; only the test's own pause is silence
-  return o;
-}
-
-// The robot's side: sends from its own (ephemeral) port, as a KRC does.
-class FakeRobot {
- public:
-  explicit FakeRobot(uint16_t link_port) : to_(net::makeEndpoint("127.0.0.1", link_port)) { socket_.bind("127.0.0.1", 0); }
-  // Sends a <Rob> with this IPOC and A1 actual; returns the answer ("" if none within 2 s).
-  std::string exchange(uint64_t ipoc, double a1 = 0, const std::string& raw = {}) {
-    const std::string rob = !raw.empty() ? raw
-                                         : "<Rob Type=\"ImFree\"><AIPos A1=\"" + std::to_string(a1) +
-                                               "\" A2=\"-90\" A3=\"90\" A4=\"0\" A5=\"90\" A6=\"0\" /><Delay D=\"0\" /><IPOC>" +
-                                               std::to_string(ipoc) + "</IPOC></Rob>";
-    socket_.sendTo(to_, rob.data(), rob.size());
-    char buffer[2048];
-    net::Endpoint from;
-    const long n = socket_.receiveFrom(buffer, sizeof buffer, &from, 2'000'000);
-    return n > 0 ? std::string(buffer, size_t(n)) : std::string();
-  }
-
- private:
-  net::UdpSocket socket_;
-  net::Endpoint to_;
-};
-
-// The attribute's value in an answer.
-double attribute(const std::string& sen, const std::string& name) {
-  const size_t at = sen.find(" " + name + "=\"");
-  return at == std::string::npos ? NAN : std::stod(sen.substr(at + name.size() + 3));
-}
-
-}  // namespace
 
 class TestRsiLink : public QObject {
   Q_OBJECT

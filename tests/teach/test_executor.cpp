@@ -142,7 +142,7 @@ void TestExecutor::teachByDraggingAndReplay() {
   QVERIFY(eventually([&] { return !server->status().sim.dragging; }));
 
   Program taught;
-  taught.robot = XMATE7_PRO;
+  taught.robot = &xmate::model::robotSpec(XMATE7_PRO);
   taught.instructions.push_back(moveJ(targetFromState(wp1, XMATE7_PRO), 0.5, "J1"));
   taught.instructions.push_back(moveL(targetFromState(wp2, XMATE7_PRO), 0.5, "L2"));
   taught.instructions.push_back(moveC(targetFromState(via, XMATE7_PRO), targetFromState(wp4, XMATE7_PRO), 0.5, "C3"));
@@ -551,7 +551,7 @@ void TestExecutor::poseTargetsOnASixAxisArm() {
   via.pose[3] += 0.03;
   via.pose[7] += 0.03;
   Program program;
-  program.robot = XMATE7;
+  program.robot = &xmate::model::robotSpec(XMATE7);
   program.instructions.push_back(moveJ(down, 0.5, "down"));
   program.instructions.push_back(moveL(side, 0.5, "side"));
   program.instructions.push_back(moveC(via, down, 0.5, "arc back"));
@@ -563,7 +563,7 @@ void TestExecutor::poseTargetsOnASixAxisArm() {
   QVERIFY(distance(report.instructions[2].pose, down.pose) < kPositionTolerance);
   QCOMPARE(robot->receiveRobotState().q_c[6], 0.0);
   // A program taught on another model is refused.
-  program.robot = XMATE7_PRO;
+  program.robot = &xmate::model::robotSpec(XMATE7_PRO);
   const RunReport wrong = executor.run(*robot, program);
   QCOMPARE(wrong.outcome, RunState::kRefused);
   QVERIFY2(QString::fromStdString(wrong.message).contains("taught for the xMate Pro 7"), wrong.message.c_str());

@@ -22,7 +22,7 @@ const std::array<double, 16> kPose{1, 0, 0, 0.5, 0, -1, 0, 0.1, 0, 0, -1, 0.4, 0
 
 Program sampleProgram() {
   Program p;
-  p.robot = XMATE7_PRO;
+  p.robot = &xmate::model::robotSpec(XMATE7_PRO);
   Target q;
   q.has_q = true;
   q.q = {0.1, 0.2, 0.3, 1.2, -0.1, 1.1, 0.7};
@@ -245,7 +245,7 @@ void TestProgram::savedTextKeepsItsLayout() {
   const std::string path = dataDir() + "/resources/programs/example.json";
   QCOMPARE(QString::fromStdString(programText(loadProgram(path))), QString::fromStdString(readFile(path)));
   Program p;
-  p.robot = XMATE3;
+  p.robot = &xmate::model::robotSpec(XMATE3);
   Instruction wait;
   wait.type = InstructionType::kWait;
   wait.ms = 250;
@@ -314,7 +314,7 @@ void TestProgram::toolAndLoadRoundTrip() {
 
 void TestProgram::exampleProgramLoads() {
   const Program p = loadProgram(dataDir() + "/resources/programs/example.json");
-  QCOMPARE(p.robot, XMATE7_PRO);
+  QCOMPARE(p.robot, &xmate::model::robotSpec(XMATE7_PRO));
   QCOMPARE(p.instructions.size(), size_t(7));
   QCOMPARE(p.instructions[2].type, InstructionType::kMoveC);
 }

@@ -116,7 +116,7 @@ Program smallProgram(const std::array<double, 7>& q_home) {
   const Target via = shifted(b, 0.03, 0.03, 0.0);
   const Target c = shifted(b, 0.06, 0.0, 0.0);
   Program p;
-  p.robot = kType;
+  p.robot = &xmate::model::robotSpec(kType);
   p.instructions.push_back(moveJ(a, 1.0, "A"));
   p.instructions.push_back(moveL(b, 1.0, "B"));
   p.instructions.push_back(moveC(via, c, 1.0, "C"));

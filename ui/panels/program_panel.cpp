@@ -477,15 +477,15 @@ void ProgramPanel::record() {
     return;
   }
   const xmate::XmateType type = session().robot() ? session().robot()->type() : session().target().type;
-  if (model_->count() > 0 && program().robot != type) {
+  if (model_->count() > 0 && program().robot != &xmate::model::robotSpec(type)) {
     showStatus(tr("Record: this program is for another robot model than the one connected — start a new "
                   "program (New) to teach this robot."),
                true);
     return;
   }
-  if (model_->count() == 0 && program().robot != type) {
+  if (model_->count() == 0 && program().robot != &xmate::model::robotSpec(type)) {
     xmate::teach::Program empty;
-    empty.robot = type;
+    empty.robot = &xmate::model::robotSpec(type);
     model_->setProgram(empty);
   }
   if (!teachWithRobotTool(tr("Record"))) return;
@@ -577,7 +577,7 @@ bool ProgramPanel::logicFromEditor(size_t row, Instruction& in) {
   if (in.type == InstructionType::kWait) in.ms = logic_ms_->value();
   if (in.type == InstructionType::kWaitDi) in.timeout_ms = logic_ms_->value();
   try {
-    xmate::teach::validateInstruction(in, row, program().robot);
+    xmate::teach::validateInstruction(in, row, *program().robot);
   } catch (const std::exception& e) {
     markInvalid(logic_ms_, true);
     showStatus(tr("Not changed: %1.").arg(QString::fromStdString(e.what())), true);
@@ -625,7 +625,7 @@ void ProgramPanel::touchUp(bool via) {
   const int row = selectedRow();
   if (row < 0 || !haveLiveState() || running_) return;
   if (!teachWithRobotTool(via ? tr("Touch up via") : tr("Touch up"))) return;
-  const xmate::teach::Target pose = xmate::teach::targetFromState(session().live().state, program().robot);
+  const xmate::teach::Target pose = xmate::teach::targetFromState(session().live().state, *program().robot);
   if (via) {
     if (!model_->replaceVia(row, pose)) {
       showStatus(tr("Touch up via: select a MOVEC instruction."), true);

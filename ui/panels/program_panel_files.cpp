@@ -65,7 +65,7 @@ void ProgramPanel::newClicked() {
 
 void ProgramPanel::newProgram() {
   xmate::teach::Program empty;
-  empty.robot = session().robot() ? session().robot()->type() : session().target().type;
+  empty.robot = &xmate::model::robotSpec(session().robot() ? session().robot()->type() : session().target().type);
   model_->setProgram(empty);
   path_.clear();
   modified_ = false;
@@ -128,7 +128,7 @@ bool ProgramPanel::saveAsClicked() {
 bool ProgramPanel::saveFile(const QString& path) {
   const auto& p = program();
   try {
-    for (size_t i = 0; i < p.instructions.size(); ++i) xmate::teach::validateInstruction(p.instructions[i], i, p.robot);
+    for (size_t i = 0; i < p.instructions.size(); ++i) xmate::teach::validateInstruction(p.instructions[i], i, *p.robot);
     xmate::teach::saveProgram(path.toStdString(), p);
   } catch (const std::exception& e) {
     note(tr("Save failed: %1 — nothing was written; fix it and save again.").arg(QString::fromStdString(e.what())), true, path);

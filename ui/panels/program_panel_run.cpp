@@ -18,6 +18,7 @@
 
 #include <xmate/model.h>
 
+#include "model/arm_kinematics.h"
 #include "panels/fields.h"
 #include "panels/lamp.h"
 #include "panels/program_model.h"
@@ -287,11 +288,11 @@ void ProgramPanel::sessionClosed() {
 void ProgramPanel::updateOverlay() {
   const auto& p = program();
   const xmate::teach::TraceOptions options = traceOptions();
-  std::optional<xmate::XmateModel> model;  // for targets taught as joints only
+  std::optional<xmate::model::ArmKinematics> model;  // for targets taught as joints only
   auto position = [&](const xmate::teach::Target& t) -> std::array<double, 3> {
     if (t.has_pose) return {t.pose[3], t.pose[7], t.pose[11]};
     if (!model) {
-      model.emplace(p.robot);
+      model.emplace(*p.robot);
       model->SetCoor(p.has_tool ? p.tool : options.tool);
     }
     const auto pose = model->GetCartPose(t.q);

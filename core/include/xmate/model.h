@@ -88,6 +88,7 @@ class XmateModel {
   XmateType Type() const;
 
  private:
+  friend struct XmateModelAccess;  // RCI Studio's own code (not part of this API)
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

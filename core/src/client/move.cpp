@@ -18,6 +18,7 @@
 #include "client/move_check.h"
 #include "client/stall_bridge.h"
 #include "model/robot_spec.h"
+#include "model/xmate_model_access.h"
 #include "planning/cartesian_path.h"
 #include "planning/cartesian_pose.h"
 #include "planning/cartesian_trajectory.h"
@@ -114,7 +115,7 @@ bool moveCartesian(const char* call, double speed_ratio, cart_pos& start, const 
                           " rad; pass the current state (or psi_valid = false)");
   const std::array<double, 16> pose0 = model.GetCartPose(q0);
   const planning::CartesianPath path = makePath(pose0, psi0, via, target);
-  const planning::CartesianTrajectory trajectory = client::planWithinJointLimits(call, path, speed_ratio, model, q0);
+  const planning::CartesianTrajectory trajectory = client::planWithinJointLimits(call, path, speed_ratio, XmateModelAccess::kinematics(model), q0);
   if (planning::duration(trajectory) <= 0) return true;
 
   MotionClock clock;

@@ -76,9 +76,9 @@ const char* ikFailureText(int code) {
   return "inverse kinematics failed";
 }
 
-JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory, XmateModel& model,
+JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory, const model::ArmKinematics& model,
                            const std::array<double, 7>& q_start, double speed_ratio) {
-  const model::RobotSpec& spec = model::robotSpec(model.Type());
+  const model::RobotSpec& spec = model.spec();
   const int dof = spec.dof;
   const double total = planning::duration(trajectory);
   const int steps = int(std::ceil(total / kDt - 1e-9));
@@ -118,7 +118,7 @@ JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory
 }
 
 planning::CartesianTrajectory planWithinJointLimits(const char* call, const planning::CartesianPath& path,
-                                                    double speed_ratio, XmateModel& model,
+                                                    double speed_ratio, const model::ArmKinematics& model,
                                                     const std::array<double, 7>& q_start) {
   double timing_ratio = speed_ratio;
   JointSweep sweep;

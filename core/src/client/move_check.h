@@ -10,6 +10,7 @@
 #include <xmate/model.h>
 #include <xmate/rci_types.h>
 
+#include "model/arm_kinematics.h"
 #include "model/robot_spec.h"
 #include "planning/cartesian_trajectory.h"
 
@@ -48,14 +49,14 @@ inline constexpr double kMaxSlowdown = 20.0;
 // Samples `trajectory` every 1 ms from q_start with IK (q_init = the previous sample) and measures
 // the joint rates by finite differences. Throws MotionException at the first sample IK cannot
 // reach (naming the fraction of the path, the time, the TCP position and the IK reason).
-JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory, XmateModel& model,
+JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory, const model::ArmKinematics& model,
                            const std::array<double, 7>& q_start, double speed_ratio);
 
 // Times `path` at speed_ratio and, while the joint rates would exceed their limits, re-times it
 // slower (at most kMaxSlowdown times). Throws MotionException when it is unreachable, or when it
 // would need a slower timing than that (it passes too close to a singular pose), saying where.
 planning::CartesianTrajectory planWithinJointLimits(const char* call, const planning::CartesianPath& path,
-                                                    double speed_ratio, XmateModel& model,
+                                                    double speed_ratio, const model::ArmKinematics& model,
                                                     const std::array<double, 7>& q_start);
 
 // "beyond the arm's reach", ... for an XmateModel::IkResult.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// JointMotionGenerator (xmate/joint_motion.h): every joint follows q_i(t) = q_start_i + delta_i s(t)
-// with one normalised double-S profile s: 0 -> 1, so all joints move on a straight line in joint
-// space, start and stop together, and none exceeds its own limits (docs/planning.md).
+// JointMotionGenerator (xmate/joint_motion.h): the vendor API around planning::JointLine -- every
+// joint follows q_i(t) = q_start_i + delta_i s(t) with one normalised double-S profile s: 0 -> 1, so
+// all joints move on a straight line in joint space, start and stop together, and none exceeds its
+// own limits (docs/planning.md).
 #include <xmate/joint_motion.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 
 #include "model/robot_spec.h"
 #include "planning/double_s.h"
+#include "planning/joint_line.h"
 
 namespace xmate {
 namespace {
@@ -38,25 +40,6 @@ void requireInRange(const std::array<double, 7>& q, const model::RobotSpec& spec
         << "; pass a finite value inside it";
     throw std::invalid_argument(msg.str());
   }
-}
-
-// The limits of the normalised profile s: 0 -> 1. Joint i moves delta_i * s, so its velocity is
-// delta_i * ds/dt: the tightest joint sets each limit of s (joints that do not move set none).
-struct NormalisedLimits {
-  double v, a, j;
-};
-NormalisedLimits normalisedLimits(const std::array<double, 7>& delta, const model::RobotSpec& spec,
-                                  double speed_ratio) {
-  constexpr double kNone = std::numeric_limits<double>::infinity();
-  NormalisedLimits s{kNone, kNone, kNone};
-  for (int i = 0; i < spec.dof; ++i) {
-    const double d = std::abs(delta[i]);
-    if (d == 0) continue;
-    s.v = std::min(s.v, spec.dq_max[i] * speed_ratio / d);
-    s.a = std::min(s.a, spec.ddq_max[i] * speed_ratio / d);
-    s.j = std::min(s.j, spec.jerk_max[i] * speed_ratio / d);
-  }
-  return s;
 }
 
 void requirePlanned(bool planned) {
@@ -85,14 +68,9 @@ void JointMotionGenerator::calculateSynchronizedValues_joint(const std::array<do
 
   const model::RobotSpec& spec = model::robotSpec(type_);
   requireInRange(q_start, spec, "q_start");
-  std::array<double, 7> delta{};
-  for (int i = 0; i < spec.dof; ++i) delta[i] = q_goal_[i] - q_start[i];
-
-  const NormalisedLimits limits = normalisedLimits(delta, spec, speed_ratio_);
-  // A zero move has no limiting joint; any finite limits give its zero-duration profile.
-  const bool moves = std::isfinite(limits.v);
-  profile_ = moves ? planning::planDoubleS(1.0, limits.v, limits.a, limits.j) : planning::DoubleSProfile{};
-  delta_ = delta;
+  const planning::JointLine line = planning::planJointLine(spec, q_start, q_goal_, speed_ratio_);
+  profile_ = line.profile;
+  delta_ = line.delta;
   q_start_ = q_start;
   planned_ = true;
 }

@@ -82,6 +82,7 @@ class Link {
   void start();
   void stop();
   uint16_t port() const { return port_; }  // the bound port (valid after start)
+  const LinkOptions& options() const { return options_; }
 
   // Any thread, lock-free.
   bool latest(RobSample& out) const { return latest_.load(out) > 0; }
@@ -89,6 +90,9 @@ class Link {
   LinkCounters counters() const;
   const char* lastReason() const { return last_reason_.load(std::memory_order_acquire); }
   net::RealtimeStatus realtimeStatus() const;
+  // Only inside the callback (the link's thread): the RSI session the datagram belongs to (1 for
+  // the first; +1 each time the robot starts sending again after silence -- a new RSI_ON).
+  uint32_t callbackSession() const { return session_; }
   // The decoder's slot of a SEND value (set-up), for RobSample::values and the callback.
   int slot(std::string_view element, std::string_view attribute = {}) const { return decoder_.slot(element, attribute); }
 

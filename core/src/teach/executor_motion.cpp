@@ -187,7 +187,7 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
   const Instruction& in = program.instructions[index];
   const model::RobotSpec& spec = model::robotSpec(robot_->type());
   const int dof = spec.dof;
-  XmateModel model(robot_->type());
+  model::ArmKinematics model(spec);
   model.SetCoor(program.has_tool ? program.tool : robot_->toolFrame());  // the TCP its poses are poses of
   model.SetSpeedCheckInterval(0);
   if (has_soft_limits_) {

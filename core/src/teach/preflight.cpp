@@ -13,6 +13,7 @@
 #include <xmate/model.h>
 
 #include "client/move_check.h"
+#include "model/arm_kinematics.h"
 #include "model/robot_spec.h"
 #include "planning/cartesian_pose.h"
 #include "teach/program_io.h"
@@ -44,7 +45,7 @@ bool insideBox(const SafetyBox& box, const std::array<double, 3>& p) {
 class Tracer {
  public:
   Tracer(const Program& program, const TraceOptions& options)
-      : program_(program), options_(options), spec_(model::robotSpec(program.robot)), model_(program.robot) {
+      : program_(program), options_(options), spec_(*program.robot), model_(*program.robot) {
     model_.SetCoor(program.has_tool ? program.tool : options.tool);  // the TCP its poses are poses of
     model_.SetSpeedCheckInterval(0);
     if (options.has_soft_limits) {
@@ -81,7 +82,7 @@ class Tracer {
   const Program& program_;
   const TraceOptions& options_;
   const model::RobotSpec& spec_;
-  XmateModel model_;
+  model::ArmKinematics model_;
   std::array<double, 7> q_{};
   size_t index_ = 0;
   InstructionTrace current_;
@@ -91,7 +92,7 @@ class Tracer {
 
   void traceOne(const Instruction& in) {
     try {
-      validateInstruction(in, index_, program_.robot);
+      validateInstruction(in, index_, *program_.robot);
     } catch (const ProgramError& e) {
       result_.problems.push_back({index_, e.what()});
       return;
@@ -231,7 +232,7 @@ std::vector<std::vector<std::array<double, 3>>> plannedPath(const Program& progr
 
 ToolMismatch toolMismatch(const Program& program, const std::array<double, 7>& q, const std::array<double, 16>& tcp) {
   if (!program.has_tool) return {};
-  XmateModel model(program.robot);
+  model::ArmKinematics model(*program.robot);
   model.SetCoor(program.tool);
   const Eigen::Isometry3d expected = planning::poseFromRowMajor(model.GetCartPose(q), "TCP");
   const Eigen::Isometry3d measured = planning::poseFromRowMajor(tcp, "measured TCP");

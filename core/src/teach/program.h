@@ -11,6 +11,8 @@
 #include <xmate/rci_types.h>
 #include <xmate/types.h>
 
+#include "model/robot_spec.h"
+
 namespace xmate::teach {
 
 // A taught position: joint angles, a TCP pose with the arm angle, or both (recording stores both).
@@ -50,7 +52,8 @@ struct Payload {
 };
 
 struct Program {
-  XmateType robot = XMATE7_PRO;
+  // The model it was taught for (static storage: model::robotSpec / findRobotSpec); never null.
+  const model::RobotSpec* robot = &model::robotSpec(XMATE7_PRO);
   // The tool (TCP in the flange frame, 4x4 row-major) and payload the program was taught with. Its
   // poses are poses of that TCP: with another tool on the robot MOVEL/MOVEC would drive the new TCP
   // to them, so a run refuses when the robot's TCP does not match (toolMismatch, preflight.h).

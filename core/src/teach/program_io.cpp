@@ -250,7 +250,7 @@ Program programFromJson(const Json& doc) {
   const Json& list = require(doc, "instructions", "instructions", w);
   if (!list.is_array()) w.fail("instructions", "expected an array, " + got(list));
   Program p;
-  p.robot = spec->type;
+  p.robot = spec;
   const Json* tool = member(doc, "tool");
   const Json* load = member(doc, "load");
   if ((tool == nullptr) != (load == nullptr))
@@ -273,7 +273,7 @@ Json programToJson(const Program& program) {
   Json doc = Json::object();
   doc["format"] = kProgramFormat;
   doc["version"] = kProgramVersion;
-  doc["robot"] = std::string(model::robotSpec(program.robot).name);
+  doc["robot"] = std::string(program.robot->name);
   if (program.has_tool) {
     doc["tool"] = program.tool;
     Json load = Json::object();
@@ -311,14 +311,14 @@ Program loadProgram(const std::string& path) {
 
 void saveProgram(const std::string& path, const Program& program) { writeFileAtomically(path, programText(program)); }
 
-void validateInstruction(const Instruction& instruction, size_t index, XmateType robot) {
-  instructionFrom(instructionToJson(instruction), index, model::robotSpec(robot));
+void validateInstruction(const Instruction& instruction, size_t index, const model::RobotSpec& robot) {
+  instructionFrom(instructionToJson(instruction), index, robot);
 }
 
-void requireRobot(const Program& program, XmateType type) {
-  if (program.robot == type) return;
-  const auto& want = model::robotSpec(program.robot);
-  const auto& have = model::robotSpec(type);
+void requireRobot(const Program& program, const model::RobotSpec& robot) {
+  if (program.robot == &robot) return;
+  const auto& want = *program.robot;
+  const auto& have = robot;
   throw ProgramError("the program was taught for the " + std::string(want.display_name) + " (" +
                      std::string(want.name) + ") but the robot is the " + std::string(have.display_name) + " (" +
                      std::string(have.name) + "); poses and joint angles do not carry over -- teach it again on "

@@ -41,10 +41,11 @@ void saveProgram(const std::string& path, const Program& program);
 
 // Checks one instruction as loading would (kinds, ranges, finiteness, homogeneous poses); throws
 // ProgramError naming it as instruction index + 1. For programs built in memory (the GUI).
-void validateInstruction(const Instruction& instruction, size_t index, XmateType robot);
+void validateInstruction(const Instruction& instruction, size_t index, const model::RobotSpec& robot);
 
-// Throws ProgramError unless the program was taught for `type` ("the program is for xMate Pro 7,
+// Throws ProgramError unless the program was taught for `robot` ("the program is for xMate Pro 7,
 // the robot is an xMate 3: ...").
-void requireRobot(const Program& program, XmateType type);
+void requireRobot(const Program& program, const model::RobotSpec& robot);
+inline void requireRobot(const Program& program, XmateType type) { requireRobot(program, model::robotSpec(type)); }
 
 }  // namespace xmate::teach

@@ -5,14 +5,15 @@
 #include <Eigen/Geometry>
 #include <xmate/model.h>
 
+#include "model/arm_kinematics.h"
 #include "model/robot_spec.h"
 #include "planning/cartesian_pose.h"
 #include "teach/preflight.h"
 
 namespace xmate::teach {
 
-Target targetFromState(const RCI::robot::RobotState& state, XmateType type) {
-  const bool six_axis = model::robotSpec(type).dof == 6;
+Target targetFromState(const RCI::robot::RobotState& state, const model::RobotSpec& robot) {
+  const bool six_axis = robot.dof == 6;
   Target t;
   t.has_q = true;
   t.q = state.q;
@@ -35,7 +36,7 @@ std::string adoptTool(Program& program, const RCI::robot::RobotState& state, con
   taught.has_tool = true;
   taught.tool = tool;
   if (!toolMatches(toolMismatch(taught, state.q, state.toolTobase_pos_m))) {
-    XmateModel flange_model(program.robot);  // identity tool: the flange
+    const model::ArmKinematics flange_model(*program.robot);  // identity tool: the flange
     const Eigen::Isometry3d flange = planning::poseFromRowMajor(flange_model.GetCartPose(state.q), "flange");
     const Eigen::Isometry3d tcp = planning::poseFromRowMajor(state.toolTobase_pos_m, "measured TCP");
     taught.tool = planning::poseToRowMajor(flange.inverse() * tcp);

@@ -14,7 +14,10 @@ namespace xmate::teach {
 
 // The measured joints, TCP pose and arm angle of `state`; on 6-axis models q[6] is forced to 0
 // and psi to 0.
-Target targetFromState(const RCI::robot::RobotState& state, XmateType type);
+Target targetFromState(const RCI::robot::RobotState& state, const model::RobotSpec& robot);
+inline Target targetFromState(const RCI::robot::RobotState& state, XmateType type) {
+  return targetFromState(state, model::robotSpec(type));
+}
 
 // The tool and payload a program is taught with. The first recording into an empty program without
 // a recorded tool makes them the program's: `tool` (Robot::toolFrame()) if the measured TCP of

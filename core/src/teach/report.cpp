@@ -39,7 +39,7 @@ Json reportToJson(const Program& program, const RunReport& report) {
   Json doc = Json::object();
   doc["format"] = kReportFormat;
   doc["version"] = 1;
-  doc["robot"] = std::string(model::robotSpec(program.robot).name);
+  doc["robot"] = std::string(program.robot->name);
   doc["outcome"] = runStateName(report.outcome);
   if (!report.message.empty()) doc["message"] = report.message;
   doc["failed_instruction"] = report.failed_instruction >= 0 ? Json(report.failed_instruction + 1) : Json();

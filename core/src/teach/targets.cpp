@@ -6,7 +6,7 @@
 
 namespace xmate::teach {
 
-int jointGoal(const Target& target, XmateModel& model, const std::array<double, 7>& q_now,
+int jointGoal(const Target& target, const model::ArmKinematics& model, const std::array<double, 7>& q_now,
               std::array<double, 7>& q_goal) {
   if (target.has_q) {
     q_goal = target.q;
@@ -16,12 +16,12 @@ int jointGoal(const Target& target, XmateModel& model, const std::array<double, 
   return model.GetJointPos(target.pose, psi, q_now, q_goal);
 }
 
-planning::PathPoint cartesianPoint(const Target& target, XmateModel& model, double psi_hold, const char* what) {
+planning::PathPoint cartesianPoint(const Target& target, const model::ArmKinematics& model, double psi_hold, const char* what) {
   if (target.has_pose) return planning::pathPoint(target.pose, target.has_psi ? target.psi : psi_hold, what);
   return planning::pathPoint(model.GetCartPose(target.q), model.GetPsi(target.q), what);
 }
 
-planning::CartesianPath cartesianPath(const Instruction& in, XmateModel& model, const std::array<double, 7>& q_now) {
+planning::CartesianPath cartesianPath(const Instruction& in, const model::ArmKinematics& model, const std::array<double, 7>& q_now) {
   const double psi_now = model.GetPsi(q_now);
   const planning::PathPoint start = planning::pathPoint(model.GetCartPose(q_now), psi_now, "the start pose");
   const planning::PathPoint end = cartesianPoint(in.target, model, psi_now, "target");

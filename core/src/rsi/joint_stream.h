@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: Apache-2.0
+// rsi::JointStream moves a KUKA over RSI by joint positions: on the link's thread it turns the joint
+// command of the running CycleMotion into the axis corrections AK (the total since RSI_ON, in
+// degrees) and holds still between motions; before a motion starts, checkMotion() samples it at the
+// RSI cycle against the axis speeds and the context's AXISCORR limits. docs/rsi.md, "Motion".
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+#include "model/robot_spec.h"
+#include "net/seqlock.h"
+#include "rsi/config.h"
+#include "rsi/link.h"
+
+namespace xmate::rsi {
+
+// The total axis correction AXISCORR lets through, per axis (rad), and the object that sets it.
+struct AxisCorrectionLimits {
+  std::string object;  // e.g. "AXISCORR1"
+  std::array<double, 6> lower{}, upper{};
+};
+
+// The first AXISCORR object's LowerLimA1..A6 / UpperLimA1..A6 (KUKA's default +-5 deg where one is
+// not given). Throws ConfigError naming the file when the context has no AXISCORR object (it then
+// cannot move the robot by axis corrections) or a limit is not a number. Set-up; any thread.
+AxisCorrectionLimits axisCorrectionLimits(const Context& context);
+
+// What the stream knows on a cycle (rad).
+struct StreamState {
+  uint32_t session = 0;           // RSI session (a new RSI_ON starts a new one)
+  uint64_t cycles = 0;            // <Rob> datagrams of this session
+  std::array<double, 6> q_on{};   // set-point axes when this session began: corrections are relative to it
+  std::array<double, 6> q{};      // actual axes (DEF_AIPos)
+  std::array<double, 6> q_set{};  // set-point axes (DEF_ASPos; the actual ones if the config does not send it)
+  std::array<double, 6> q_command{};  // the axes the last correction asks for (q_on + correction)
+};
+
+// A motion streamed one command per RSI cycle.
+class CycleMotion {
+ public:
+  virtual ~CycleMotion() = default;
+  // The link's thread, real-time: no allocation, no lock. Writes the joints (rad) for this cycle;
+  // returns true when that was the last command of the motion.
+  virtual bool command(const StreamState& state, std::array<double, 6>& q) = 0;
+};
+
+class JointStream {
+ public:
+  // Installs itself as the link's callback: call before link.start(). The link must send DEF_AIPos.
+  // Throws std::invalid_argument if the config does not send DEF_AIPos or receive AK.A1..A6.
+  JointStream(Link& link, const model::RobotSpec& spec, const AxisCorrectionLimits& limits);
+
+  // Any thread, lock-free. False until the first <Rob> arrived.
+  bool state(StreamState& out) const { return state_.load(out) > 0; }
+
+  // The caller's thread (one at a time): waits (at most `wait_for_robot`) for RSI to run, streams
+  // `motion` until its last command, and returns. Throws std::runtime_error when RSI does not run,
+  // or stops or restarts during the motion (the robot then holds where RSI left it).
+  void run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot = std::chrono::seconds(5));
+
+  // Refusal text (empty when fine) for joint samples 1 cycle apart: a sample outside the axis range,
+  // an axis faster than its rated speed, or a total correction q - q_on beyond the AXISCORR limits.
+  // Names the axis, the limit and the value, in degrees. Any thread.
+  std::string checkSamples(const double* q, size_t count, const std::array<double, 6>& q_on) const;
+
+  double cycleSeconds() const { return cycle_s_; }
+  const AxisCorrectionLimits& limits() const { return limits_; }
+
+ private:
+  Correction onCycle(const RobDecoder& rob);
+
+  Link& link_;
+  const model::RobotSpec& spec_;
+  const AxisCorrectionLimits limits_;
+  double cycle_s_;
+  std::array<int, 6> actual_slots_{}, set_slots_{};
+  // The link's thread's own values.
+  StreamState now_;
+  std::array<double, 6> correction_{};  // rad, total since RSI_ON
+  std::atomic<CycleMotion*> motion_{nullptr};
+  std::atomic<bool> motion_done_{false};
+  net::Seqlock<StreamState> state_;
+};
+
+}  // namespace xmate::rsi
