@@ -6,7 +6,7 @@ set -eu
 PACKAGES="build-essential cmake ninja-build pkg-config file dpkg-dev
  qt6-base-dev qt6-base-dev-tools qt6-charts-dev qt6-3d-dev libqt6opengl6-dev libgl-dev qt6-qpa-plugins
  libeigen3-dev liburdfdom-dev libassimp-dev
- nlohmann-json3-dev libcli11-dev libinih-dev libexpat1-dev
+ nlohmann-json3-dev libcli11-dev libinih-dev libexpat1-dev libpugixml-dev libtinyxml2-dev
  liborocos-kdl-dev libkdl-parser-dev
  clang-14 libclang-rt-14-dev
  xvfb xauth libgl1-mesa-dri fonts-dejavu-core

@@ -7,11 +7,20 @@
 
 #include "cli.h"
 #include "model/robot_spec.h"
+#include "net/udp_socket.h"
 
 namespace rci_cli {
 namespace {
 
-const char* kModels = "xmate3_pro, xmate7_pro, xmate3, xmate7";
+// "xmate3_pro, xmate7_pro, ..." or "kr6_r900_sixx, kr16_2": the models of one family, for messages.
+std::string modelNames(xmate::model::RobotFamily family) {
+  std::string names;
+  for (const xmate::model::RobotSpec& spec : xmate::model::allRobotSpecs())
+    if (spec.family == family) names += (names.empty() ? "" : ", ") + std::string(spec.name);
+  return names;
+}
+std::string xmateModels() { return modelNames(xmate::model::RobotFamily::kXmate); }
+std::string kukaModels() { return modelNames(xmate::model::RobotFamily::kKuka); }
 
 // A whole number in [lo, hi], or why not ("" if it is one).
 std::string wholeNumberProblem(const std::string& text, long lo, long hi) {
@@ -62,13 +71,26 @@ HostPort parseHostPort(const std::string& text, uint16_t default_port, const std
   return address;
 }
 
-RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed) {
-  const std::string expected = sim_allowed ? "write sim (the in-process simulator) or HOST:PORT, e.g. 127.0.0.1:1337"
-                                           : "write HOST:PORT, e.g. 127.0.0.1:1337";
+RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed, bool rsi_allowed) {
+  std::string expected = sim_allowed ? "write sim (the in-process simulator) or HOST:PORT, e.g. 127.0.0.1:1337"
+                                     : "write HOST:PORT, e.g. 127.0.0.1:1337";
+  if (rsi_allowed)
+    expected += sim_allowed ? "; for a KUKA rsi:ETHERNET.xml (its RSI Ethernet config) or rsi-sim (a simulated KRC)"
+                            : "; for a KUKA rsi:ETHERNET.xml (its RSI Ethernet config)";
   RobotTarget target;
   if (text == "sim") {
     if (!sim_allowed) throw UsageError("'sim': this command needs a controller address; " + expected);
     target.in_process = true;
+    return target;
+  }
+  if (text == "rsi-sim" || text.rfind("rsi:", 0) == 0) {
+    if (!rsi_allowed) throw UsageError("'" + text + "': this command drives xMate robots only; " + expected);
+    if (text == "rsi-sim" && !sim_allowed) throw UsageError("'rsi-sim': this command needs a robot; " + expected);
+    if (text == "rsi:")
+      throw UsageError("'rsi:': no file; write rsi:ETHERNET.xml, the robot's RSI Ethernet config (e.g. "
+                       "rsi:RSI_EthernetConfig.xml)");
+    target.rsi = true;
+    if (text != "rsi-sim") target.rsi_config = text.substr(4);
     return target;
   }
   target.address = parseHostPort(text, target.address.port, expected);
@@ -94,16 +116,95 @@ CLI::Option* addSensorOption(CLI::App& command, FtOptions& options) {
 }
 
 xmate::XmateType parseModel(const std::string& text) {
-  if (const auto* spec = xmate::model::findRobotSpec(text)) return spec->type;
-  throw UsageError("unknown model '" + text + "'; choose one of: " + kModels);
+  if (isRsiModel(text))
+    throw UsageError("'" + text + "' is a KUKA arm; this takes an xMate model: " + xmateModels() +
+                     " (KUKA arms: state --robot rsi:ETHERNET.xml --model " + text + ")");
+  if (const auto* spec = xmate::model::findXmateSpec(text)) return spec->type;
+  throw UsageError("unknown model '" + text + "'; choose one of: " + xmateModels());
 }
 
-CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_allowed, const std::string& help) {
+std::string unknownModelText(const std::string& name) {
+  return "unknown model '" + name + "'; choose one of: " + xmateModels() + " (xMate, --robot HOST:PORT) or " +
+         kukaModels() + " (KUKA, --robot rsi:ETHERNET.xml)";
+}
+
+bool isRsiModel(const std::string& name) {
+  const xmate::model::RobotSpec* spec = xmate::model::findRobotSpec(name);
+  return spec && spec->family == xmate::model::RobotFamily::kKuka;
+}
+
+void checkStateOptions(StateOptions& o) {
+  if (o.robot.rsi) {
+    if (o.model_name.empty())
+      throw UsageError("--robot rsi:... needs --model NAME, the KUKA arm: " + kukaModels());
+    if (!isRsiModel(o.model_name))
+      throw UsageError("--model '" + o.model_name + "' is not a KUKA model; with --robot rsi:... choose one of: " +
+                       kukaModels());
+    return;
+  }
+  const char* rsi_only = o.bind_given ? "--bind" : o.port_given ? "--port" : o.wait_given ? "--wait" : nullptr;
+  if (rsi_only)
+    throw UsageError(std::string(rsi_only) + " applies to a KUKA over RSI (--robot rsi:ETHERNET.xml); leave out " +
+                     rsi_only + " for an xMate controller");
+  if (o.model_name.empty()) return;
+  if (isRsiModel(o.model_name))
+    throw UsageError("--model '" + o.model_name + "' is a KUKA arm, which speaks RSI: write --robot rsi:ETHERNET.xml");
+  o.model = parseModel(o.model_name);
+}
+
+void addStateOptions(CLI::App& state, StateOptions& o) {
+  addRobotOption(state, o.robot, false,
+                 "HOST:PORT: an xMate controller (or rci-sim); rsi:ETHERNET.xml: a KUKA arm over RSI, answered where "
+                 "that Ethernet config's IP_NUMBER and PORT say (docs/rsi.md)",
+                 true)
+      ->required();
+  addWholeNumberOption(state, "--count", o.count, 1, 100'000'000,
+                       "stop after N refreshes (RSI: N cycles) (default: until Ctrl-C)");
+  addModelNameOption(state, o.model_name,
+                     "the robot's model: " + xmateModels() + " (default xmate7_pro); over RSI (required): " +
+                         kukaModels());
+  addRsiListenOptions(state, o.listen);
+  addWholeNumberOption(state, "--wait", o.wait_s, 1, 86'400,
+                       "RSI: give up after S seconds without a <Rob> from the robot (default 60)")
+      ->type_name("S");
+}
+
+CLI::Option* addModelNameOption(CLI::App& command, std::string& name, const std::string& help) {
+  return command.add_option("--model", name, help)->type_name("NAME")->check(parsedBy([](const std::string& text) {
+    if (xmate::model::findRobotSpec(text) == nullptr) throw UsageError(unknownModelText(text));
+  }));
+}
+
+void addRsiListenOptions(CLI::App& command, RsiListen& listen) {
+  command.add_option("--bind", listen.bind_ip, "RSI: listen on this address of the PC instead of the config's IP_NUMBER")
+      ->type_name("ADDR")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            try {
+              xmate::net::makeEndpoint(text, 0);
+              return std::string();
+            } catch (const std::exception&) {
+              return "takes an IPv4 address of this PC (e.g. 192.168.1.20, or 0.0.0.0 for every address), got '" +
+                     text + "'";
+            }
+          },
+          ""));
+  addWholeNumberOption(command, "--port", listen.port, 0, 65535,
+                       "RSI: listen on this UDP port instead of the config's PORT (0: a free one, announced)");
+}
+
+CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_allowed, const std::string& help,
+                            bool rsi_allowed) {
   CLI::Option* option = command.add_option_function<std::string>(
-      "--robot", [&target, sim_allowed](const std::string& text) { target = parseRobotTarget(text, sim_allowed); },
+      "--robot",
+      [&target, sim_allowed, rsi_allowed](const std::string& text) {
+        target = parseRobotTarget(text, sim_allowed, rsi_allowed);
+      },
       help);
-  option->type_name(sim_allowed ? "sim|HOST:PORT" : "HOST:PORT");
-  option->check(parsedBy([sim_allowed](const std::string& text) { parseRobotTarget(text, sim_allowed); }));
+  option->type_name(std::string(sim_allowed ? "sim|HOST:PORT" : "HOST:PORT") +
+                    (rsi_allowed ? (sim_allowed ? "|rsi:FILE|rsi-sim" : "|rsi:FILE") : ""));
+  option->check(parsedBy(
+      [sim_allowed, rsi_allowed](const std::string& text) { parseRobotTarget(text, sim_allowed, rsi_allowed); }));
   return option;
 }
 

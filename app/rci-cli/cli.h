@@ -30,18 +30,24 @@ struct HostPort {
 
 // What --robot names: the in-process simulator ("sim") or a controller at HOST:PORT.
 struct RobotTarget {
-  bool in_process = false;
-  HostPort address;
+  bool in_process = false;  // "sim": an in-process xMate simulator
+  HostPort address;         // an xMate controller
+  // A KUKA over RSI: "rsi:ETHERNET.xml" (rsi_config: the Ethernet config's path), or "rsi-sim" (an
+  // in-process simulated KRC; rsi_config empty).
+  bool rsi = false;
+  std::string rsi_config;
 };
 
 // The one parser of --robot's value, for every command that takes it: "sim" (when sim_allowed),
-// "HOST:PORT" or "HOST" (port 1337). Throws UsageError saying what was wrong and what to write.
-RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed);
+// "HOST:PORT" or "HOST" (port 1337), and with rsi_allowed "rsi:FILE" (and "rsi-sim" when
+// sim_allowed too). Throws UsageError saying what was wrong and what to write.
+RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed, bool rsi_allowed = false);
 
 // Options shared by the commands, with their checks (a bad value is a CLI11 ValidationError whose
 // message says what the option takes and what it got):
 //   --robot sim|HOST:PORT (or HOST:PORT alone), parsed by parseRobotTarget into `target`;
-CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_allowed, const std::string& help);
+CLI::Option* addRobotOption(CLI::App& command, RobotTarget& target, bool sim_allowed, const std::string& help,
+                            bool rsi_allowed = false);
 //   --model NAME (or another name, e.g. the positional NAME of `model`), one of the four model names;
 CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std::string& help,
                             const std::string& name = "--model");
@@ -51,24 +57,51 @@ CLI::Option* addWholeNumberOption(CLI::App& command, const std::string& name, lo
 // "'xmate7_pro' -> XMATE7_PRO"; UsageError listing the four names otherwise.
 xmate::XmateType parseModel(const std::string& text);
 
+// Where the PC listens for a KUKA's RSI datagrams (--bind, --port).
+struct RsiListen {
+  std::string bind_ip;  // --bind ("": the config's IP_NUMBER, or every address if it is a placeholder)
+  long port = -1;       // --port (-1: the config's PORT; 0: a free port, announced)
+};
+// --bind ADDR and --port P, for `state` and `run` over RSI.
+void addRsiListenOptions(CLI::App& command, RsiListen& listen);
+
 struct StateOptions {
-  RobotTarget robot;  // never in_process
+  RobotTarget robot;  // never in_process; rsi: a KUKA arm over RSI (cmd_state_rsi.cpp), never rsi-sim
   long count = 0;     // 0: until interrupted
   xmate::XmateType model = xmate::XMATE7_PRO;
+  std::string model_name;  // --model as written ("": left out), checked by checkStateOptions
+  RsiListen listen;
+  long wait_s = 60;        // --wait: give up when no <Rob> comes for this long
+  bool bind_given = false, port_given = false, wait_given = false;
 };
+// A KUKA model of the robot specs (model::findRobotSpec): the arms that speak RSI.
+bool isRsiModel(const std::string& name);
+// "unknown model 'X'; choose one of: ... (xMate, ...) or ... (KUKA, ...)".
+std::string unknownModelText(const std::string& name);
+// --model NAME: any model of either family, by name (checked: unknownModelText).
+CLI::Option* addModelNameOption(CLI::App& command, std::string& name, const std::string& help);
+// The checks that need more than one option (--model against --robot's kind, --bind/--port/--wait
+// only with rsi:); fills options.model. Throws UsageError saying what to write instead.
+void checkStateOptions(StateOptions& options);
+// The options of `state`: --robot HOST:PORT|rsi:FILE (required), --count, --model, and for RSI --bind,
+// --port, --wait (whether those were given is read from the command after parsing).
+void addStateOptions(CLI::App& state, StateOptions& options);
 
 struct RunOptions {
   std::string program_path;
   RobotTarget robot;
-  bool have_model = false;
-  xmate::XmateType model = xmate::XMATE7_PRO;
+  std::string model_name;    // --model ("": the program's)
+  RsiListen listen;          // RSI: where to listen
+  std::string context_path;  // RSI: --context, the RSI context (its AXISCORR limits); "": found beside the config
+  int cycle_ms = 4;          // RSI: --cycle-ms, the robot's RSI cycle (4 with #IPO_FAST, else 12)
+  bool rsi_options_given = false;  // any of --bind, --port, --context, --cycle-ms
   double speed = 1.0;
   std::string report_path;
   bool fast = false;  // in-process simulator on the lock-step clock (faster than real time)
 };
 
 struct LoopOptions {
-  RobotTarget robot{true, {}};
+  RobotTarget robot{true, {}, false, {}};
   long cycles = 10'000;
   bool lockstep = false;
   xmate::XmateType type = xmate::XMATE7_PRO;
@@ -88,9 +121,12 @@ CLI::Option* addSensorOption(CLI::App& command, FtOptions& options);
 int runModel(xmate::XmateType type);         // rci-cli [model NAME]
 int runFt(const FtOptions& options);         // rci-cli ft --sensor HOST[:PORT] [--count N] [--counts-per-unit C]
 int runState(const StateOptions& options);   // rci-cli state --robot HOST:PORT [--count N] [--model NAME]
+// rci-cli state --robot rsi:ETHERNET.xml --model NAME [--bind ADDR] [--port P] [--count N] [--wait S]
+int runStateRsi(const StateOptions& options);
 int runDoctor();                             // rci-cli doctor
 int runBenchLoop(const LoopOptions& options);  // rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep] [--model NAME]
 int runBenchClient(long cycles);             // rci-cli bench client [--cycles N]
+int runBenchRsi(long cycles);                // rci-cli bench rsi [--cycles N]
 int runRun(const RunOptions& options);       // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]
 
 }  // namespace rci_cli

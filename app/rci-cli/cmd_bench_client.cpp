@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "bench_stats.h"
 #include "cli.h"
 #include "client/connection_rt.h"
 #include "net/clock.h"
@@ -16,26 +17,6 @@
 #include "protocol/realtime_codec.h"
 
 namespace rci_cli {
-namespace {
-
-struct Percentiles {
-  double median = 0, p99 = 0, max = 0;
-};
-
-Percentiles percentilesOf(std::vector<int64_t>& ns) {
-  std::sort(ns.begin(), ns.end());
-  auto at = [&](double f) { return double(ns[std::min(ns.size() - 1, size_t(f * double(ns.size())))]) / 1000.0; };
-  return {at(0.5), at(0.99), double(ns.back()) / 1000.0};
-}
-
-// Empties the sink socket so the sends never meet a full buffer (outside the timed sections).
-void drain(xmate::net::UdpSocket& sink) {
-  uint8_t buf[512];
-  while (sink.receiveFrom(buf, sizeof buf, nullptr, 0) > 0) {
-  }
-}
-
-}  // namespace
 
 int runBenchClient(long cycles) {
   using namespace xmate;
@@ -110,10 +91,10 @@ int runBenchClient(long cycles) {
 
   const Percentiles c = percentilesOf(client_ns), m = percentilesOf(memcpy_ns), s = percentilesOf(sendto_ns);
   std::printf("rci-cli bench client: %ld cycles, one thread, loopback\n", cycles);
-  std::printf("  %-52s %9s %9s %9s\n", "(us)", "median", "p99", "max");
-  std::printf("  %-52s %9.3f %9.3f %9.3f\n", "client cycle: decode+publish+callback+encode+send", c.median, c.p99, c.max);
-  std::printf("  %-52s %9.3f %9.3f %9.3f\n", "reference: memcpy of the 1247-byte datagram", m.median, m.p99, m.max);
-  std::printf("  %-52s %9.3f %9.3f %9.3f\n", "reference: raw sendto of 290 bytes", s.median, s.p99, s.max);
+  printPercentilesHeader();
+  printPercentilesRow("client cycle: decode+publish+callback+encode+send", c);
+  printPercentilesRow("reference: memcpy of the 1247-byte datagram", m);
+  printPercentilesRow("reference: raw sendto of 290 bytes", s);
   std::printf("  client cost above a raw sendto (medians): %.3f us\n", c.median - s.median);
   std::printf("  budget: median <= 5 us -> %s\n", c.median <= 5.0 ? "met" : "NOT met");
   return 0;

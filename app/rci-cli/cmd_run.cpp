@@ -1,20 +1,28 @@
 // SPDX-License-Identifier: Apache-2.0
 // rci-cli run: loads a program, connects to a robot (or starts an in-process simulator for the
-// program's model: real-time clock, or lock-step with --fast), runs the pre-flight and the executor
-// (core/src/teach), prints a line per instruction, and writes the run report. Ctrl-C stops the
-// robot smoothly on its path.
+// program's model: real-time clock, or lock-step with --fast) -- an xMate over RCI, or a KUKA over
+// RSI (rsi:ETHERNET.xml, or rsi-sim: an in-process simulated KRC) -- runs the pre-flight and the
+// executor (core/src/teach), prints a line per instruction, and writes the run report. Ctrl-C stops
+// the robot smoothly on its path.
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include <xmate/robot.h>
 
 #include "cli.h"
+#include "model/resource_locator.h"
 #include "model/robot_spec.h"
+#include "rsi/joint_stream.h"
+#include "rsi/link.h"
+#include "sim/krc_server.h"
 #include "sim/server.h"
 #include "teach/executor.h"
 #include "teach/program_io.h"
@@ -92,30 +100,10 @@ void printFinished(const RunOptions& o, const Program& program, const RunReport&
   std::printf("\n");
 }
 
-}  // namespace
-
-int runRun(const RunOptions& o) {
-  if (o.fast && !o.robot.in_process)
-    throw UsageError("--fast applies to the in-process simulator (--robot sim); a controller keeps its own clock: "
-                     "leave out --fast");
-  const Program program = loadProgram(o.program_path);
-  const xmate::XmateType type = o.have_model ? o.model : program.robot;
-  requireRobot(program, type);
-
-  std::unique_ptr<xmate::sim::Server> server;
-  HostPort address = o.robot.address;
-  if (o.robot.in_process) {
-    server = startSimulator(type, simulatorClock(o));
-    address = {"127.0.0.1", server->port()};
-  }
-  xmate::Robot robot(address.host, address.port, type);
-  robot.connect();
-  const std::string where = o.robot.in_process ? std::string(" (in-process simulator, ") + clockText(simulatorClock(o)) + ")" : "";
-  std::printf("running %s (%zu instructions, %s) on %s:%u%s at %.0f %% speed\n", o.program_path.c_str(),
-              program.instructions.size(), std::string(xmate::model::robotSpec(type).display_name).c_str(),
-              address.host.c_str(), address.port, where.c_str(), o.speed * 100);
-  std::fflush(stdout);
-
+// Runs the program through `run_on_robot` with Ctrl-C turned into a smooth stop, a line per
+// instruction and the report; the exit status.
+int replay(const RunOptions& o, const Program& program,
+           const std::function<RunReport(Executor&, const ExecutorOptions&)>& run_on_robot) {
   Executor executor;
   ExecutorOptions options;
   options.speed_override = o.speed;
@@ -123,7 +111,7 @@ int runRun(const RunOptions& o) {
   std::signal(SIGINT, onInterrupt);
   std::atomic<bool> done{false};
   std::thread watcher = interruptWatcher(executor, done);
-  const RunReport report = executor.run(robot, program, options);
+  const RunReport report = run_on_robot(executor, options);
   done.store(true);
   watcher.join();
   std::signal(SIGINT, SIG_DFL);
@@ -143,6 +131,131 @@ int runRun(const RunOptions& o) {
       std::fprintf(stderr, "rci-cli: %s: %s\n", runStateName(report.outcome), report.message.c_str());
       return 1;
   }
+}
+
+// The RSI context beside `config_path` whose ETHERNET object names that file.
+std::string contextNaming(const std::string& config_path) {
+  namespace fs = std::filesystem;
+  const fs::path config = fs::weakly_canonical(config_path);
+  std::vector<std::string> found;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(config.parent_path(), error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() < 8 || name.compare(name.size() - 8, 8, ".rsi.xml") != 0) continue;
+    try {
+      if (fs::weakly_canonical(xmate::rsi::readContext(entry.path().string()).ethernetConfigPath()) == config)
+        found.push_back(entry.path().string());
+    } catch (const std::exception&) {
+      // Not a context we can read: not the one.
+    }
+  }
+  if (found.size() == 1) return found.front();
+  throw std::runtime_error(
+      (found.empty() ? "no RSI context (NAME.rsi.xml) beside " + config_path + " names it"
+                     : std::to_string(found.size()) + " RSI contexts beside " + config_path + " name it") +
+      "; give the one the robot runs with --context NAME.rsi.xml (its AXISCORR limits bound every motion)");
+}
+
+// Waits (at most a minute) until the robot sends; says what to do meanwhile.
+void waitForRsi(const xmate::rsi::Link& link, const xmate::rsi::JointStream& stream, const std::string& where) {
+  std::printf("waiting for the robot on %s -- start the KRL program with RSI_ON and RSI_MOVECORR\n", where.c_str());
+  std::fflush(stdout);
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  xmate::rsi::StreamState s;
+  while (!(link.receiving() && stream.state(s))) {
+    if (std::chrono::steady_clock::now() > end || g_interrupted.load())
+      throw std::runtime_error("no <Rob> datagram arrived on " + where +
+                               " within 60 s: check that the KRL program runs RSI_ON, that IP_NUMBER and PORT in "
+                               "the Ethernet config name this PC, and that no firewall blocks the port");
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
+// A KUKA over RSI: the link and joint stream on this PC, and for rsi-sim a simulated KRC.
+int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::RobotSpec& spec) {
+  using namespace xmate;
+  if (spec.family != model::RobotFamily::kKuka)
+    throw std::runtime_error(o.program_path + " was taught for the " + std::string(spec.display_name) +
+                             ", an xMate: run it with --robot sim or --robot HOST:PORT");
+  const bool simulated = o.robot.rsi_config.empty();
+  std::string context_path = o.context_path;
+  if (context_path.empty())
+    context_path = simulated ? (model::dataDirectory() / "resources/rsi/rci_replay.rsi.xml").string()
+                             : contextNaming(o.robot.rsi_config);
+  const rsi::Context context = rsi::readContext(context_path);
+  const std::string config_path = simulated ? context.ethernetConfigPath() : o.robot.rsi_config;
+  const rsi::EthernetConfig config = rsi::readEthernetConfig(config_path);
+
+  rsi::LinkOptions link_options;
+  link_options.bind_ip = simulated ? "127.0.0.1" : o.listen.bind_ip;
+  link_options.port = simulated ? 0 : int(o.listen.port);
+  link_options.cycle_ms = o.cycle_ms;
+  rsi::Link link(config, link_options);
+  rsi::JointStream stream(link, spec, rsi::axisCorrectionLimits(context));
+  link.start();
+  std::unique_ptr<sim::KrcServer> krc;
+  if (simulated) {
+    sim::KrcServerConfig k;
+    k.krc.context_path = context_path;
+    k.krc.model = std::string(spec.name);
+    k.krc.cycle_ms = o.cycle_ms;
+    k.target_ip = "127.0.0.1";
+    k.target_port = link.port();
+    krc = std::make_unique<sim::KrcServer>(k);
+    krc->start();
+  }
+  const std::string where = (link_options.bind_ip.empty() ? config.ip : link_options.bind_ip) + ":" +
+                            std::to_string(link.port());
+  waitForRsi(link, stream, where);
+  std::printf("running %s (%zu instructions, %s) over RSI on %s%s, %d ms cycle, context %s, at %.0f %% speed\n",
+              o.program_path.c_str(), program.instructions.size(), std::string(spec.display_name).c_str(),
+              where.c_str(), simulated ? " (in-process simulated KRC)" : "", o.cycle_ms,
+              std::filesystem::path(context_path).filename().c_str(), o.speed * 100);
+  std::fflush(stdout);
+  const int status = replay(o, program, [&](Executor& executor, const ExecutorOptions& options) {
+    return executor.run(stream, program, options);
+  });
+  if (krc) krc->stop();
+  link.stop();
+  return status;
+}
+
+}  // namespace
+
+int runRun(const RunOptions& o) {
+  if (o.fast && !o.robot.in_process)
+    throw UsageError("--fast applies to the in-process simulator (--robot sim); a controller keeps its own clock: "
+                     "leave out --fast");
+  if (o.rsi_options_given && !o.robot.rsi)
+    throw UsageError("--bind, --port, --context and --cycle-ms apply to a KUKA over RSI (--robot rsi:ETHERNET.xml or "
+                     "rsi-sim); leave them out for an xMate");
+  const Program program = loadProgram(o.program_path);
+  const xmate::model::RobotSpec& spec = o.model_name.empty() ? *program.robot : *xmate::model::findRobotSpec(o.model_name);
+  requireRobot(program, spec);
+  if (o.robot.rsi) return runOverRsi(o, program, spec);
+  const std::optional<xmate::XmateType> xmate_type = xmate::model::xmateType(spec);
+  if (!xmate_type)
+    throw std::runtime_error(o.program_path + " was taught for the " + std::string(spec.display_name) +
+                             ", a KUKA arm: run it over RSI with --robot rsi:ETHERNET.xml (or rsi-sim for a simulated "
+                             "KRC)");
+  const xmate::XmateType type = *xmate_type;
+
+  std::unique_ptr<xmate::sim::Server> server;
+  HostPort address = o.robot.address;
+  if (o.robot.in_process) {
+    server = startSimulator(type, simulatorClock(o));
+    address = {"127.0.0.1", server->port()};
+  }
+  xmate::Robot robot(address.host, address.port, type);
+  robot.connect();
+  const std::string where = o.robot.in_process ? std::string(" (in-process simulator, ") + clockText(simulatorClock(o)) + ")" : "";
+  std::printf("running %s (%zu instructions, %s) on %s:%u%s at %.0f %% speed\n", o.program_path.c_str(),
+              program.instructions.size(), std::string(spec.display_name).c_str(), address.host.c_str(),
+              address.port, where.c_str(), o.speed * 100);
+  std::fflush(stdout);
+  return replay(o, program, [&](Executor& executor, const ExecutorOptions& options) {
+    return executor.run(robot, program, options);
+  });
 }
 
 }  // namespace rci_cli

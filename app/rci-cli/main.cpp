@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// rci-cli: headless tools for xMate robots (docs/client.md). Without arguments it describes the
-// default model; subcommands read a robot's state live, check the machine's real-time setup, and
-// benchmark the 1 kHz loop and the client's cost per cycle, and run taught programs headless.
+// rci-cli: headless tools for xMate robots (docs/client.md) and KUKA arms over RSI (docs/rsi.md).
+// Without arguments it describes the default model; subcommands read a robot's state live (RCI or
+// RSI), check the machine's real-time setup, benchmark the 1 kHz loop and the client's and the RSI
+// link's cost per cycle, and run taught programs headless.
 // The command line is CLI11's: a subcommand per tool, each with its generated --help.
 #include <cstdio>
 #include <string>
@@ -56,18 +57,21 @@ std::string explain(const CLI::ParseError& e, const CLI::App& app, const CLI::Ap
     if (!first.empty() && first[0] == '-')
       return (name.empty() ? "" : name + ": ") + "unknown option '" + first + "'";
     if (command == &app) return "unknown command '" + first + "' (known: model, state, run, doctor, bench, ft, help)";
-    if (name == "bench") return "unknown bench '" + first + "' (known: loop, client)";
+    if (name == "bench") return "unknown bench '" + first + "' (known: loop, client, rsi)";
     return name + ": unexpected argument '" + first + "'";
   }
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) return what.substr(0, what.find(':')) + " needs a value";
   if (dynamic_cast<const CLI::RequiredError*>(&e)) {
     if (name == "bench") {
       const auto rest = command->remaining();
-      return rest.empty() ? "bench needs 'loop' or 'client'" : "unknown bench '" + rest.front() + "' (known: loop, client)";
+      return rest.empty() ? "bench needs 'loop', 'client' or 'rsi'"
+                          : "unknown bench '" + rest.front() + "' (known: loop, client, rsi)";
     }
     if (what.rfind("PROGRAM", 0) == 0) return "run needs a program file (PROGRAM.json)";
     if (what.rfind("--robot", 0) == 0)
-      return name + (name == "run" ? " needs --robot sim or --robot HOST:PORT" : " needs --robot HOST:PORT");
+      return name + (name == "run"     ? " needs --robot sim or --robot HOST:PORT"
+                     : name == "state" ? " needs --robot HOST:PORT (an xMate) or --robot rsi:ETHERNET.xml (a KUKA over RSI)"
+                                       : " needs --robot HOST:PORT");
     return name + ": " + what;
   }
   if (dynamic_cast<const CLI::ValidationError*>(&e)) {
@@ -90,8 +94,9 @@ int usageError(const std::string& message, const CLI::App* command) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("Headless tools for ROKAE xMate robots and the simulator: a model's limits, a robot's live "
-               "state, this machine's real-time fitness, loop and client benchmarks, running taught programs. "
+  CLI::App app("Headless tools for ROKAE xMate robots and the simulator, and KUKA arms over RSI: a model's "
+               "limits, a robot's live state, this machine's real-time fitness, loop, client and RSI link "
+               "benchmarks, running taught programs. "
                "Without a command: the limits of the xMate Pro 7 (rci-cli model).",
                "rci-cli");
   app.footer("Exit status: 0 success, 1 failure at run time (the message says why), 2 bad arguments.\n"
@@ -105,21 +110,28 @@ int main(int argc, char** argv) {
 
   StateOptions state_options;
   CLI::App* state = app.add_subcommand("state", "live readout of a robot's state (joints, torques, TCP pose, "
-                                                 "mode, error bits, command success rate)");
-  addRobotOption(*state, state_options.robot, false, "the controller (or rci-sim) to read")->required();
-  addWholeNumberOption(*state, "--count", state_options.count, 1, 100'000'000,
-                       "stop after N refreshes (default: until Ctrl-C)");
-  addModelOption(*state, state_options.model, "the robot's model (default xmate7_pro)");
+                                                 "mode, error bits, command success rate); a KUKA's over RSI "
+                                                 "(axes, pose, motor currents, Delay, IPOC, cycle time)");
+  addStateOptions(*state, state_options);
 
   RunOptions run_options;
   CLI::App* run = app.add_subcommand("run", "run a taught program (docs/teach.md): pre-flight, then replay");
   run->add_option("PROGRAM", run_options.program_path, "the program file (rci-program JSON)")->required();
   addRobotOption(*run, run_options.robot, true,
                  "sim: an in-process simulator for the program's model on its real-time clock; HOST:PORT: a "
-                 "controller or rci-sim")
+                 "controller or rci-sim; rsi:ETHERNET.xml: a KUKA over RSI (docs/rsi.md); rsi-sim: an in-process "
+                 "simulated KRC for the program's KUKA model",
+                 true)
       ->required();
-  const CLI::Option* run_model =
-      addModelOption(*run, run_options.model, "the robot's model when it is not the program's (a mismatch is refused)");
+  addModelNameOption(*run, run_options.model_name, "the robot's model when it is not the program's (a mismatch is refused)");
+  addRsiListenOptions(*run, run_options.listen);
+  run->add_option("--context", run_options.context_path,
+                  "RSI: the RSI context (NAME.rsi.xml) the robot runs, for its correction limits (default: the one "
+                  "beside the Ethernet config that names it; rsi-sim: resources/rsi/rci_replay.rsi.xml)")
+      ->type_name("FILE");
+  run->add_option("--cycle-ms", run_options.cycle_ms, "RSI: the robot's cycle, 4 (RSI_ON with #IPO_FAST) or 12")
+      ->type_name("MS")
+      ->check(CLI::IsMember({4, 12}));
   run->add_option("--speed", run_options.speed, "speed override from 0.1 to 1.0 (default 1.0)")
       ->type_name("R")
       ->check(CLI::Validator(
@@ -142,7 +154,8 @@ int main(int argc, char** argv) {
 
   CLI::App* doctor = app.add_subcommand("doctor", "real-time fitness of this machine, with advice");
 
-  CLI::App* bench = app.add_subcommand("bench", "benchmarks: the 1 kHz loop, the client's cost per cycle");
+  CLI::App* bench =
+      app.add_subcommand("bench", "benchmarks: the 1 kHz loop, the client's and the RSI link's cost per cycle");
   bench->require_subcommand(1);
   LoopOptions loop_options;
   CLI::App* loop = bench->add_subcommand("loop", "1 kHz joint-position loop: period, jitter, late and lost cycles");
@@ -153,6 +166,11 @@ int main(int argc, char** argv) {
   long client_cycles = 100'000;
   CLI::App* client = bench->add_subcommand("client", "the client's cost per cycle (decode, callback, encode, send)");
   addWholeNumberOption(*client, "--cycles", client_cycles, 1000, 100'000'000, "cycles to measure (default 100000)");
+  long rsi_cycles = 100'000;
+  CLI::App* rsi_bench = bench->add_subcommand(
+      "rsi", "the RSI link's cost per cycle (parse <Rob>, callback, compose <Sen>, send) against a tinyxml2 DOM "
+             "and a raw sendto");
+  addWholeNumberOption(*rsi_bench, "--cycles", rsi_cycles, 100, 100'000'000, "cycles to measure (default 100000)");
 
   FtOptions ft_options;
   CLI::App* ft = app.add_subcommand("ft", "read an ATI Net F/T force/torque sensor: Fx Fy Fz (N) and Tx Ty Tz (Nm) per sample");
@@ -168,7 +186,14 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-    run_options.have_model = run_model->count() > 0;
+    run_options.rsi_options_given =
+        run->count("--bind") + run->count("--port") + run->count("--context") + run->count("--cycle-ms") > 0;
+    if (state->parsed()) {
+      state_options.bind_given = state->count("--bind") > 0;
+      state_options.port_given = state->count("--port") > 0;
+      state_options.wait_given = state->count("--wait") > 0;
+      checkStateOptions(state_options);
+    }
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
     return 0;
@@ -190,13 +215,15 @@ int main(int argc, char** argv) {
     }
     // Commands that talk to a controller pin the whole process in RAM (the library locks only its
     // real-time thread's memory); refused without privileges, reported by the session then.
-    if (state->parsed() || run->parsed() || loop->parsed() || client->parsed()) xmate::net::lockAllMemory();
-    if (state->parsed()) return runState(state_options);
+    if (state->parsed() || run->parsed() || loop->parsed() || client->parsed() || rsi_bench->parsed())
+      xmate::net::lockAllMemory();
+    if (state->parsed()) return state_options.robot.rsi ? runStateRsi(state_options) : runState(state_options);
     if (run->parsed()) return runRun(run_options);
     if (doctor->parsed()) return runDoctor();
     if (ft->parsed()) return runFt(ft_options);
     if (loop->parsed()) return runBenchLoop(loop_options);
     if (client->parsed()) return runBenchClient(client_cycles);
+    if (rsi_bench->parsed()) return runBenchRsi(rsi_cycles);
     return runModel(model_type);  // `rci-cli` alone or `rci-cli model [NAME]`
   } catch (const UsageError& e) {
     const CLI::App* command = selectedCommand(app);

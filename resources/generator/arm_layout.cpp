@@ -16,6 +16,9 @@ namespace {
 // gets a 135 mm wide shoulder, the Pro 7 a 153 mm one, in line with cobots of that size.
 constexpr double kRadiusPerReach = 0.05;
 constexpr double kTaperPerJoint = 0.02;       // each joint 2 % slimmer than the one before
+// Housings scale with the cube root of the joint torque, but no joint is slimmer than this share of
+// joint 1's (a KUKA wrist needs far less torque than its base; the xMates' ratios are all above).
+constexpr double kMinTorqueScale = 0.6;
 constexpr double kTubeRatio = 0.88;           // tube radius / smaller neighbouring housing radius
 constexpr double kFilletRatio = 0.2;          // housing rim fillet / housing radius
 constexpr double kPitchHousingLength = 2.0;   // across a joint whose link leaves sideways
@@ -44,12 +47,15 @@ Eigen::Vector3d segment(const model::Chain& chain, int j) {
   return j < chain.dof ? chain.joints[j].origin.translation() : chain.flange.translation();
 }
 
-// True when link j runs along joint j's own axis (a "roll" joint such as joint 1).
-bool isRollJoint(const model::Chain& chain, int j) {
-  const Eigen::Vector3d s = segment(chain, j);
+// The segment from joint j to the next joint in two legs, as the DH row builds it: first along
+// joint j's axis (d), then across it (a). Every xMate row has only one of the two.
+Eigen::Vector3d alongLeg(const model::Chain& chain, int j) {
   const Eigen::Vector3d axis = chain.joints[j - 1].axis;
-  return s.norm() > kTiny && s.cross(axis).norm() < kTiny * s.norm();
+  return segment(chain, j).dot(axis) * axis;
 }
+
+// True when link j leaves joint j along its own axis (a "roll" joint such as joint 1).
+bool isRollJoint(const model::Chain& chain, int j) { return alongLeg(chain, j).norm() > kTiny; }
 
 // Housing around joint j, in the frame of the link before it (base_link for joint 1).
 Solid jointHousing(const model::RobotSpec& spec, const model::Chain& chain, int j) {
@@ -73,22 +79,33 @@ Solid jointHousing(const model::RobotSpec& spec, const model::Chain& chain, int 
   return {what, roundedCylinder(r, -half, half, fillet), axisFrame(centre, axis)};
 }
 
-// Capsule from joint j's centre to joint j+1's, in link j's frame; none when they coincide.
+// Capsules from joint j's centre to joint j+1's, in link j's frame: one per leg of the segment
+// (alongLeg, then across); none for a leg shorter than the joint housing's radius, which the
+// housings cover (the KUKA shoulder and elbow offsets).
 void addLinkTube(const model::RobotSpec& spec, const model::Chain& chain, int j, std::vector<Solid>& out) {
-  const Eigen::Vector3d s = segment(chain, j);
-  if (s.norm() <= kTiny) return;
+  const Eigen::Vector3d along = alongLeg(chain, j);
+  const Eigen::Vector3d across = segment(chain, j) - along;
+  const bool two_legs = along.norm() > kTiny && across.norm() > kTiny;
   const double r = kTubeRatio * std::min(housingRadius(spec, j), housingRadius(spec, j + 1));
-  // Along a roll joint's axis the rounded end would poke out behind the joint: start it later.
-  const double start = isRollJoint(chain, j) ? r : 0.0;
-  if (s.norm() - start <= r)
-    throw std::invalid_argument("rci-robotgen: link " + std::to_string(j) + " of " + std::string(spec.name) +
-                                " is too short for its tube; check the DH table or the shell sizes");
-  const Eigen::Vector3d dir = s.normalized();
-  out.push_back({"link " + std::to_string(j) + " tube", capsule(r, s.norm() - start), axisFrame(start * dir, dir)});
+  const std::string what = "link " + std::to_string(j) + " tube";
+  for (int leg = 0; leg < 2; ++leg) {
+    const Eigen::Vector3d s = leg == 0 ? along : across;
+    const Eigen::Vector3d from = leg == 0 ? Eigen::Vector3d::Zero() : along;
+    if (s.norm() <= kTiny) continue;
+    if (s.norm() <= housingRadius(spec, leg == 0 ? j : j + 1)) continue;
+    // Along a roll joint's axis the rounded end would poke out behind the joint: start it later.
+    const double start = leg == 0 ? r : 0.0;
+    if (s.norm() - start <= r)
+      throw std::invalid_argument("rci-robotgen: link " + std::to_string(j) + " of " + std::string(spec.name) +
+                                  " is too short for its tube; check the DH table or the shell sizes");
+    const Eigen::Vector3d dir = s.normalized();
+    out.push_back({two_legs ? what + (leg == 0 ? " (along)" : " (across)") : what, capsule(r, s.norm() - start),
+                   axisFrame(from + start * dir, dir)});
+  }
 }
 
 // The last link, the flange part: a collar coming out of the last joint's housing and the flange
-// disc, both along the line from the last joint to the flange (the flange's z for every xMate).
+// disc, both along the line from the last joint to the flange (the flange's z on every model).
 void addFlange(const model::RobotSpec& spec, const model::Chain& chain, std::vector<Solid>& out) {
   const int n = chain.dof;
   const Eigen::Vector3d f = chain.flange.translation();
@@ -120,7 +137,7 @@ LinkShell baseShell(const model::RobotSpec& spec, const model::Chain& chain) {
 double housingRadius(const model::RobotSpec& spec, int joint) {
   if (joint < 1 || joint > spec.dof)
     throw std::out_of_range("housingRadius: joint " + std::to_string(joint) + " does not exist");
-  const double torque_scale = std::cbrt(spec.tau_max[joint - 1] / spec.tau_max[0]);
+  const double torque_scale = std::max(kMinTorqueScale, std::cbrt(spec.tau_max[joint - 1] / spec.tau_max[0]));
   return kRadiusPerReach * reach(spec) * torque_scale * (1 - kTaperPerJoint * (joint - 1));
 }
 

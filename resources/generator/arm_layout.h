@@ -18,7 +18,8 @@ struct LinkShell {
 };
 
 // Radius of the housing around joint j (1-based), m. Scales with the arm's reach and the joint's
-// torque (the wrist is slimmer than the shoulder) and tapers a little towards the tool.
+// torque (the wrist is slimmer than the shoulder, down to 60 % of it) and tapers a little towards
+// the tool.
 double housingRadius(const model::RobotSpec& spec, int joint);
 
 // Shells of base_link and link1..link<dof>, in that order.

@@ -1,19 +1,26 @@
 // SPDX-License-Identifier: Apache-2.0
-// rci-robotgen: writes the robot descriptions (URDF) and link meshes (STL) of every xMate model
-// from core/src/model/robot_spec.cpp. Usage: rci-robotgen <data root> [model ...]
+// rci-robotgen: writes the robot descriptions (URDF) and link meshes (STL) of every model (xMate and
+// KUKA) from core/src/model/robot_spec.cpp. Usage: rci-robotgen <data root> [model ...]
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "generator/robot_generator.h"
 #include "model/robot_spec.h"
 
 namespace {
 
+std::string modelNames() {
+  std::string names;
+  for (const auto& spec : xmate::model::allRobotSpecs()) names += (names.empty() ? "" : " ") + std::string(spec.name);
+  return names;
+}
+
 void printUsage() {
   std::cout << "usage: rci-robotgen <data root> [model ...]\n"
                "Writes <data root>/resources/robots/<model>.urdf and <data root>/meshes/<model>/*.stl\n"
-               "for the given models (default: all of xmate3_pro xmate7_pro xmate3 xmate7).\n"
+               "for the given models (default: all of " + modelNames() + ").\n"
                "The data root of the source tree is its top folder; the build target\n"
                "regenerate-robots runs this tool on it.\n";
 }
@@ -32,13 +39,13 @@ int main(int argc, char** argv) {
   }
   try {
     if (argc == 2) {
-      for (auto type : xmate::model::allRobotTypes()) generate(xmate::model::robotSpec(type), argv[1]);
+      for (const auto& spec : xmate::model::allRobotSpecs()) generate(spec, argv[1]);
       return 0;
     }
     for (int i = 2; i < argc; ++i) {
       const auto* spec = xmate::model::findRobotSpec(argv[i]);
       if (!spec) {
-        std::cerr << "rci-robotgen: unknown model \"" << argv[i] << "\"; known: xmate3_pro xmate7_pro xmate3 xmate7\n";
+        std::cerr << "rci-robotgen: unknown model \"" << argv[i] << "\"; known: " << modelNames() << "\n";
         return 2;
       }
       generate(*spec, argv[1]);

@@ -42,9 +42,13 @@ std::string solidList(const LinkShell& shell) {
   return s;
 }
 
-std::string estimateNote(const GeneratedLink& link, double volume, double mean_density) {
+std::string estimateNote(const model::RobotSpec& spec, const GeneratedLink& link, double volume, double mean_density) {
   std::string mass_part;
-  if (link.mass_published) {
+  if (link.mass_published && spec.family == model::RobotFamily::kKuka) {
+    mass_part = "mass " + formatNumber(link.urdf.inertial.mass) +
+                " kg is our estimate listed in docs/robot_models.md, \"Link masses\" (KUKA publishes\n"
+                "         only the robot's total weight).";
+  } else if (link.mass_published) {
     mass_part = "mass " + formatNumber(link.urdf.inertial.mass) +
                 " kg is the public estimate listed in docs/robot_models.md, \"Link masses\".";
   } else {
@@ -83,7 +87,7 @@ GeneratedLink generateLink(const model::RobotSpec& spec, LinkShell shell, double
   link.urdf.name = link.shell.name;
   link.urdf.inertial = rounded(distributeMass(link.shell.solids, mass));
   link.urdf.mesh_file = (std::filesystem::path("..") / ".." / meshRelativePath(spec.name, link.shell.name)).generic_string();
-  link.urdf.estimate_note = estimateNote(link, volume, fallback_density);
+  link.urdf.estimate_note = estimateNote(spec, link, volume, fallback_density);
   return link;
 }
 

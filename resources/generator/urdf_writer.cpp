@@ -22,7 +22,22 @@ std::string originElement(const Eigen::Isometry3d& t) {
   return "<origin xyz=\"" + triple(t.translation()) + "\" rpy=\"" + triple(urdfRpy(t.linear())) + "\"/>";
 }
 
+std::string kukaHeader(const model::RobotSpec& spec) {
+  return "<?xml version=\"1.0\"?>\n"
+         "<!-- SPDX-License-Identifier: Apache-2.0\n"
+         "     GENERATED FILE, DO NOT EDIT BY HAND. Written by rci-robotgen (resources/generator) from\n"
+         "     core/src/model/robot_spec.cpp; change those and build the target regenerate-robots\n"
+         "     (docs/robot_descriptions.md).\n"
+         "     " + std::string(spec.display_name) + " (KUKA): joint placements from its DH table (docs/robot_models.md),\n"
+         "     the geometry of KUKA's published dimensions. Joint values are the controller's A1..A6: A1, A4\n"
+         "     and A6 turn about -z of their frames. Position limits (rad) and velocities (rad/s) from KUKA's\n"
+         "     data sheet; efforts (Nm) are ESTIMATES. Frames: link i sits on joint i's axis; base_link is\n"
+         "     the robot base frame. ESTIMATES: every mass, centre of mass and inertia below is an estimate\n"
+         "     (see the comment in each link and docs/robot_models.md, \"Link masses\"). -->\n";
+}
+
 std::string header(const model::RobotSpec& spec) {
+  if (spec.family == model::RobotFamily::kKuka) return kukaHeader(spec);
   return "<?xml version=\"1.0\"?>\n"
          "<!-- SPDX-License-Identifier: Apache-2.0\n"
          "     GENERATED FILE, DO NOT EDIT BY HAND. Written by rci-robotgen (resources/generator) from\n"
@@ -35,9 +50,11 @@ std::string header(const model::RobotSpec& spec) {
          "     in each link and docs/robot_descriptions.md). -->\n";
 }
 
-std::string materials() {
+// Housing colour: the xMates' white, KUKA's orange.
+std::string materials(const model::RobotSpec& spec) {
+  const bool kuka = spec.family == model::RobotFamily::kKuka;
   return "  <material name=\"housing\">\n"
-         "    <color rgba=\"0.92 0.93 0.94 1\"/>\n"
+         "    <color rgba=\"" + std::string(kuka ? "0.96 0.47 0.05 1" : "0.92 0.93 0.94 1") + "\"/>\n"
          "  </material>\n"
          "  <material name=\"flange\">\n"
          "    <color rgba=\"0.3 0.31 0.33 1\"/>\n"
@@ -108,7 +125,7 @@ std::string robotUrdf(const model::RobotSpec& spec, const std::vector<UrdfLink>&
   if (int(links.size()) != spec.dof + 1)
     throw std::invalid_argument("robotUrdf: expected base_link and " + std::to_string(spec.dof) + " links");
   const model::Chain chain = model::chainFromDh(spec);
-  std::string s = header(spec) + "<robot name=\"" + std::string(spec.name) + "\">\n" + materials();
+  std::string s = header(spec) + "<robot name=\"" + std::string(spec.name) + "\">\n" + materials(spec);
   s += linkElement(links[0]);
   for (int i = 0; i < spec.dof; ++i) {
     s += revoluteJoint(chain.joints[i], links[i].name, links[i + 1].name);

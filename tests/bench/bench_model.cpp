@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // rci-bench-model: our kinematics, dynamics and IK side by side with KDL on the same URDF, plus
-// the 7-axis joint S-curve plan. Prints median time per call and the largest difference from KDL.
+// the 7-axis joint S-curve plan; every model, the xMates and the KUKA arms. Prints median time per call and the largest difference from KDL.
 // Usage: rci-bench-model [--quick]      (results quoted in docs/performance.md)
 #include <algorithm>
 #include <chrono>
@@ -25,6 +25,7 @@
 
 #include "model/arm_model.h"
 #include "model/dynamics.h"
+#include "model/inverse_kinematics.h"
 #include "model/kinematics.h"
 #include "model/resource_locator.h"
 #include "model/robot_spec.h"
@@ -109,12 +110,14 @@ std::string formatDouble(const char* fmt, double v) {
 void printRow(const Row& r) {
   const std::string kdl = r.kdl_ns < 0 ? "-" : formatDouble("%.0f", r.kdl_ns);
   const std::string ratio = r.kdl_ns < 0 ? "-" : formatDouble("%.3f", r.ours_ns / r.kdl_ns);
-  std::printf("| %-10s | %-28s | %9.0f | %9s | %8s | %-34s |\n", r.model.c_str(), r.operation.c_str(), r.ours_ns,
+  std::printf("| %-13s | %-28s | %9.0f | %9s | %8s | %-34s |\n", r.model.c_str(), r.operation.c_str(), r.ours_ns,
               kdl.c_str(), ratio.c_str(), r.agreement.c_str());
 }
 
-// Everything for one robot model: our internal API, the public XmateModel, and KDL.
-void benchModel(const RobotSpec& spec, const Settings& s, std::vector<Row>& rows) {
+// Everything for one robot model: our internal API, the public XmateModel (xMates; the KUKA arms,
+// which it does not cover, through the same internal calls it wraps), and KDL. `index` is the
+// model's place in allRobotSpecs() (seeds the inputs).
+void benchModel(const RobotSpec& spec, int index, const Settings& s, std::vector<Row>& rows) {
   const std::string urdf = robotDescriptionPath(spec).string();
   KDL::Tree tree;
   KDL::Chain chain;
@@ -124,11 +127,14 @@ void benchModel(const RobotSpec& spec, const Settings& s, std::vector<Row>& rows
   }
   const int dof = spec.dof;
   const ArmModel arm = makeArmModel(loadRobotChain(spec), spec);
-  XmateModel model(spec.type);
+  const bool xmate = spec.family == RobotFamily::kXmate;
+  XmateModel model(xmate ? spec.type : XMATE7_PRO);  // used for the xMates only
   model.SetSpeedCheckInterval(0);
+  ArmModel ik_arm = arm;  // the KUKA arms' IK: internal API, rated-speed check off as for the xMates
+  setSpeedCheckInterval(ik_arm, 0);
   const std::string name(spec.name);
 
-  std::mt19937 rng(7 + spec.type);
+  std::mt19937 rng(7 + index);
   std::vector<JointVector> q(s.samples), dq(s.samples), ddq(s.samples);
   std::vector<KDL::JntArray> kq, kdq, kddq;
   for (int i = 0; i < s.samples; ++i) {
@@ -206,10 +212,20 @@ void benchModel(const RobotSpec& spec, const Settings& s, std::vector<Row>& rows
   std::vector<double> psi(n_ik);
   std::vector<JointVector> seed(n_ik);
   std::vector<KDL::JntArray> kseed;
+  // Our IK: the public GetJointPos on the xMates, inverseKinematics (what it wraps) on the KUKA arms.
+  std::vector<Eigen::Matrix4d> target_matrix(n_ik);
+  auto ourIk = [&](int i, std::array<double, 7>& result) {
+    if (xmate) return model.GetJointPos(target[i], psi[i], toArray(seed[i]), result);
+    JointVector qo = JointVector::Zero();
+    const int code = static_cast<int>(inverseKinematics(ik_arm, target_matrix[i], psi[i], seed[i], qo));
+    result = toArray(qo);
+    return code;
+  };
   for (int i = 0; i < n_ik; ++i) {
-    target[i] = model.GetCartPose(toArray(q[i]));
+    target[i] = xmate ? model.GetCartPose(toArray(q[i])) : std::array<double, 16>{};
+    target_matrix[i] = flangePose(arm, q[i]).matrix();
     kdl_fk.JntToCart(kq[i], kdl_target[i]);
-    psi[i] = model.GetPsi(toArray(q[i]));
+    psi[i] = xmate ? model.GetPsi(toArray(q[i])) : armAngle(arm, q[i]);
     seed[i] = q[i];
     for (int j = 0; j < dof; ++j) seed[i][j] += std::uniform_real_distribution<double>(-0.05, 0.05)(rng);
     kseed.push_back(toKdl(seed[i], dof));
@@ -223,7 +239,7 @@ void benchModel(const RobotSpec& spec, const Settings& s, std::vector<Row>& rows
   double ours_err = 0, kdl_err = 0;
   int ours_fail = 0, kdl_fail = 0;
   for (int i = 0; i < n_ik; ++i) {
-    if (model.GetJointPos(target[i], psi[i], toArray(seed[i]), out) == 0) {
+    if (ourIk(i, out) == 0) {
       JointVector qo = JointVector::Zero();
       for (int j = 0; j < dof; ++j) qo[j] = out[j];
       ours_err = std::max(ours_err, poseError(flangePose(arm, qo), fromKdl(kdl_target[i])));
@@ -237,9 +253,7 @@ void benchModel(const RobotSpec& spec, const Settings& s, std::vector<Row>& rows
       ++kdl_fail;
     }
   }
-  const double ik_ours = medianNsPerCall(n_ik, s.repeats, 20, [&](int i) {
-    g_sink = g_sink + model.GetJointPos(target[i], psi[i], toArray(seed[i]), out) + out[0];
-  });
+  const double ik_ours = medianNsPerCall(n_ik, s.repeats, 20, [&](int i) { g_sink = g_sink + ourIk(i, out) + out[0]; });
   const double ik_kdl = medianNsPerCall(n_ik, 1, 10, [&](int i) {
     g_sink = g_sink + kdl_ik.CartToJnt(kseed[i], kdl_target[i], k_out) + k_out(0);
   });
@@ -248,13 +262,18 @@ void benchModel(const RobotSpec& spec, const Settings& s, std::vector<Row>& rows
     ik_note += " (failed: ours " + std::to_string(ours_fail) + ", KDL " + std::to_string(kdl_fail) + ")";
   rows.push_back({name, "IK (closed form vs LMA)", ik_ours, ik_kdl, ik_note});
 
-  // The public call the vendor API offers for dynamics (four RNEA passes: full and each term).
+  // The public call the vendor API offers for dynamics (four RNEA passes: full and each term); on
+  // the KUKA arms the internal torqueTerms it wraps.
   std::array<double, 7> full{}, inertial{}, coriolis{}, gravity{};
   const double terms_ours = medianNsPerCall(s.samples, s.repeats, 100, [&](int i) {
-    model.GetTauNoFriction(toArray(q[i]), toArray(dq[i]), toArray(ddq[i]), full, inertial, coriolis, gravity);
-    g_sink = g_sink + full[0];
+    if (xmate) {
+      model.GetTauNoFriction(toArray(q[i]), toArray(dq[i]), toArray(ddq[i]), full, inertial, coriolis, gravity);
+      g_sink = g_sink + full[0];
+    } else {
+      g_sink = g_sink + torqueTerms(arm, q[i], dq[i], ddq[i]).full[0];
+    }
   });
-  rows.push_back({name, "GetTauNoFriction (4 terms)", terms_ours, -1, "-"});
+  rows.push_back({name, xmate ? "GetTauNoFriction (4 terms)" : "torqueTerms (4 terms)", terms_ours, -1, "-"});
 
   const double mass_ours = medianNsPerCall(s.samples, s.repeats, 100, [&](int i) {
     g_sink = g_sink + massMatrix(arm, q[i])(0, 0);
@@ -288,14 +307,15 @@ int main(int argc, char** argv) {
   std::printf("rci-bench-model: median ns per call (batches over %d random configurations, %d passes; IK over %d)\n",
               s.samples, s.repeats, s.ik_samples);
   std::printf("build type: %s; agreement = largest |ours - KDL| over all inputs\n\n", RCI_BENCH_BUILD_TYPE);
-  std::printf("| %-10s | %-28s | %9s | %9s | %8s | %-34s |\n", "model", "operation", "ours ns", "KDL ns", "ours/KDL",
+  std::printf("| %-13s | %-28s | %9s | %9s | %8s | %-34s |\n", "model", "operation", "ours ns", "KDL ns", "ours/KDL",
               "agreement with KDL");
-  std::printf("|%s|%s|%s|%s|%s|%s|\n", std::string(12, '-').c_str(), std::string(30, '-').c_str(),
+  std::printf("|%s|%s|%s|%s|%s|%s|\n", std::string(15, '-').c_str(), std::string(30, '-').c_str(),
               std::string(11, '-').c_str(), std::string(11, '-').c_str(), std::string(10, '-').c_str(),
               std::string(36, '-').c_str());
-  for (XmateType type : allRobotTypes()) {
+  const auto specs = allRobotSpecs();
+  for (int index = 0; index < int(specs.size()); ++index) {
     std::vector<Row> rows;
-    benchModel(robotSpec(type), s, rows);
+    benchModel(specs[index], index, s, rows);
     for (const Row& r : rows) printRow(r);
     std::fflush(stdout);
   }

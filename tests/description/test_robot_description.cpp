@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// test_robot_description: for every xMate model, the committed URDF and meshes against the DH
-// table, the robot spec and the generator; and the URDF loader's conversions and error messages.
+// test_robot_description: for every model (xMate and KUKA), the committed URDF and meshes against
+// the DH table, the robot spec and the generator; and the URDF loader's conversions and error messages.
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -54,10 +54,8 @@ const RobotSpec& fetchSpec() {
 
 void addModelRows() {
   QTest::addColumn<QString>("model");
-  for (auto type : xmate::model::allRobotTypes()) {
-    const auto& spec = xmate::model::robotSpec(type);
+  for (const RobotSpec& spec : xmate::model::allRobotSpecs())
     QTest::newRow(std::string(spec.name).c_str()) << QString::fromStdString(std::string(spec.name));
-  }
 }
 
 // Walks the loaded chain joint by joint: origin, then the rotation about the joint axis.
@@ -148,7 +146,7 @@ class TestRobotDescription : public QObject {
       QVERIFY(j.upper == spec.q_max[i]);
       QVERIFY(j.velocity == spec.dq_max[i]);
       QVERIFY(j.effort == spec.tau_max[i]);
-      QVERIFY(j.axis.isApprox(Eigen::Vector3d::UnitZ()));
+      QVERIFY(j.axis.isApprox(spec.dh[i].axis_sign * Eigen::Vector3d::UnitZ()));  // KUKA A1, A4, A6: -z
     }
     for (const ChainLink* link : allLinks(chain)) {
       QVERIFY2(fs::path(link->mesh).is_absolute(), link->mesh.c_str());

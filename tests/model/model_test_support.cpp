@@ -52,7 +52,7 @@ std::array<Eigen::Isometry3d, 8> dhFrames(const RobotSpec& spec, const JointVect
   for (int i = 0; i < spec.dof; ++i) {
     const DhRow& r = spec.dh[i];
     Eigen::Isometry3d step = Eigen::Isometry3d::Identity();
-    step.rotate(Eigen::AngleAxisd(r.theta + q[i], Eigen::Vector3d::UnitZ()));
+    step.rotate(Eigen::AngleAxisd(r.theta + r.axis_sign * q[i], Eigen::Vector3d::UnitZ()));
     step.translate(Eigen::Vector3d(r.a, 0, r.d));
     step.rotate(Eigen::AngleAxisd(r.alpha, Eigen::Vector3d::UnitX()));
     frames[i + 1] = frames[i] * step;

@@ -25,7 +25,7 @@ std::array<double, 7> toArray(const JointVector& q);
 JointVector fromArray(const std::array<double, 7>& q);
 
 // DH frames T_0^i of the spec's table for i = 0..dof (index 0 is the base), computed directly from
-// T(i-1 -> i) = Rz(theta + q_i) Tz(d) Tx(a) Rx(alpha): an independent reference for the model.
+// T(i-1 -> i) = Rz(theta + axis_sign q_i) Tz(d) Tx(a) Rx(alpha): an independent reference for the model.
 std::array<Eigen::Isometry3d, 8> dhFrames(const RobotSpec& spec, const JointVector& q);
 
 // Position error (m) and rotation error (rad, angle of a^T b) between two poses.

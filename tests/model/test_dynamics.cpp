@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Dynamics of all four xMate models: on the DH-table chain with random link inertias (internal
-// API) and on the URDF models (public XmateModel). Checks M(q) symmetric positive definite,
+// Dynamics of every model (the four xMates and the two KUKA arms): on the DH-table chain with
+// random link inertias and on the URDF models (internal API), and of the xMates through the public
+// XmateModel. Checks M(q) symmetric positive definite,
 // M ddq = RNEA(q,0,ddq) - RNEA(q,0,0), full = inertial + coriolis + gravity, the power balance
 // dE/dt = dq^T tau along a trajectory, gravity = grad V, Coriolis from the Christoffel symbols of
 // M, and the payload's effect.
@@ -43,14 +44,16 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
-// Each internal-API test runs on both descriptions of each model.
+// Each internal-API test runs on both descriptions of each model of every family. "index" is the
+// model's place in allRobotSpecs().
 void addRows() {
-  QTest::addColumn<int>("type");
+  QTest::addColumn<int>("index");
   QTest::addColumn<bool>("urdf");
-  for (XmateType t : allRobotTypes()) {
-    const std::string name(robotSpec(t).name);
-    QTest::newRow((name + " dh").c_str()) << static_cast<int>(t) << false;
-    QTest::newRow((name + " urdf").c_str()) << static_cast<int>(t) << true;
+  const auto specs = allRobotSpecs();
+  for (int k = 0; k < int(specs.size()); ++k) {
+    const std::string name(specs[k].name);
+    QTest::newRow((name + " dh").c_str()) << k << false;
+    QTest::newRow((name + " urdf").c_str()) << k << true;
   }
 }
 
@@ -61,10 +64,10 @@ struct Fixture {
 };
 
 Fixture fetchFixture() {
-  QFETCH(int, type);
+  QFETCH(int, index);
   QFETCH(bool, urdf);
-  const RobotSpec& spec = robotSpec(static_cast<XmateType>(type));
-  Chain chain = urdf ? loadRobotChain(spec) : dhChainWithInertias(spec, 100 + type);
+  const RobotSpec& spec = allRobotSpecs()[index];
+  Chain chain = urdf ? loadRobotChain(spec) : dhChainWithInertias(spec, 100 + index);
   ArmModel arm = makeArmModel(chain, spec);
   return {&spec, chain, arm};
 }
@@ -91,7 +94,8 @@ double potentialEnergy(const Fixture& f, const JointVector& q, const Payload& pa
   double v = 0;
   for (int i = 0; i < f.spec->dof; ++i) {
     Eigen::Isometry3d link = frames[i];
-    link.rotate(Eigen::AngleAxisd(q[i], Eigen::Vector3d::UnitZ()));
+    const DhRow& row = f.spec->dh[i];
+    link.rotate(Eigen::AngleAxisd(row.theta + row.axis_sign * q[i], Eigen::Vector3d::UnitZ()));
     v += f.chain.links[i].mass * kStandardGravity * (link * f.chain.links[i].com).z();
   }
   v += payload.mass * kStandardGravity * (frames[f.spec->dof] * payload.com).z();
@@ -298,12 +302,14 @@ class TestDynamics : public QObject {
     const double psi = armAngle(f.arm, q);
     LinkFrames frames;
     JointVector out;
+    IkBranchSolutions branches;
     double sink = 0;
     const long before = g_allocations.load();
     for (int k = 0; k < 10; ++k) {
       forwardKinematics(f.arm, q, frames);
       sink += frames.tcp(0, 3) + tcpJacobian(f.arm, q)(0, 0);
       sink += static_cast<int>(inverseKinematics(f.arm, pose, psi, q, out)) + armAngle(f.arm, q);
+      sink += static_cast<int>(inverseKinematicsBranches(f.arm, pose, psi, q, branches)) + branches.count;
       sink += inverseDynamics(f.arm, q, dq, dq)[0] + massMatrix(f.arm, q)(0, 0);
       sink += torqueTerms(f.arm, q, dq, dq).full[0] + wrenchToJointTorques(f.arm, q, Vector6d::Ones())[0];
     }

@@ -2,6 +2,8 @@
 // Kinematics of all four xMate models through the public XmateModel (loaded from the URDFs): FK
 // against the DH table, link frames, TCP, Jacobian against finite differences, the arm angle's
 // definition, the IK round trip on 100 000 random configurations per model, every IK return code.
+// The two KUKA arms (KR 6 R900 sixx, KR 16-2) through the internal API: KUKA's FK check values,
+// FK against the DH table, Jacobian, all 8 IK branches on random configurations, IK return codes.
 #include <QtTest>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <xmate/model.h>
 
 #include "model/arm_model.h"
+#include "model/euler_zyx.h"
 #include "model/inverse_kinematics.h"
 #include "model/kinematics.h"
 #include "model/urdf_loader.h"
@@ -92,6 +95,45 @@ std::array<double, 7> radToDeg(const JointVector& v) {
   for (int i = 0; i < 7; ++i) a[i] = v[i] * 180.0 / kPi;
   return a;
 }
+
+// ---- KUKA ----
+
+void addKukaRows() {
+  QTest::addColumn<QString>("model");
+  for (const RobotSpec& spec : allRobotSpecs())
+    if (spec.family == RobotFamily::kKuka)
+      QTest::newRow(std::string(spec.name).c_str()) << QString::fromStdString(std::string(spec.name));
+}
+
+const RobotSpec& fetchKukaSpec() {
+  QFETCH(QString, model);
+  const RobotSpec* spec = findRobotSpec(model.toStdString());
+  if (!spec) qFatal("unknown model in test data");
+  return *spec;
+}
+
+JointVector fromDegrees(std::initializer_list<double> deg) {
+  JointVector q = JointVector::Zero();
+  int i = 0;
+  for (double d : deg) q[i++] = d * kPi / 180.0;
+  return q;
+}
+
+// Wrist centre of an offset-wrist arm: where A4, A5 and A6 meet (DH frame 4's origin).
+Eigen::Vector3d kukaWristCentre(const RobotSpec& spec, const JointVector& q) {
+  return dhFrames(spec, q)[4].translation();
+}
+
+// The smallest of the offset-wrist singularity measures (docs/kinematics.md): distance (m) of the
+// wrist centre from the A1 axis, |sin| of the elbow's bend away from stretched or folded, |sin q5|.
+double kukaSingularityDistance(const RobotSpec& spec, const JointVector& q) {
+  const Eigen::Vector3d w = kukaWristCentre(spec, q);
+  const double beta = std::atan2(-spec.dh[3].d * (spec.dh[2].alpha < 0 ? -1.0 : 1.0), spec.dh[2].a);
+  const double phi3 = spec.dh[2].theta + spec.dh[2].axis_sign * q[2];
+  return std::min({std::hypot(w.x(), w.y()), std::abs(std::sin(phi3 + beta)), std::abs(std::sin(q[4]))});
+}
+
+double angleDifferenceDeg(double a, double b) { return std::abs(std::remainder(a - b, 360.0)); }
 
 }  // namespace
 
@@ -450,6 +492,311 @@ class TestKinematics : public QObject {
       coaxial[1] = 0;
       QCOMPARE(codeAt(coaxial), singular);
     }
+  }
+
+  // ---- KUKA (internal API) ----
+
+  void kukaSpecsAreFound() {
+    int kuka = 0;
+    for (const RobotSpec& spec : allRobotSpecs()) {
+      QCOMPARE(findRobotSpec(spec.name), &spec);
+      if (spec.family == RobotFamily::kXmate) {
+        QCOMPARE(xmateType(spec).value(), spec.type);
+        QCOMPARE(&robotSpec(spec.type), &spec);
+        QCOMPARE(findXmateSpec(spec.name), &spec);
+      } else {
+        ++kuka;
+        QVERIFY(!xmateType(spec).has_value());
+        QVERIFY(findXmateSpec(spec.name) == nullptr);
+      }
+    }
+    QCOMPARE(kuka, 2);
+    QCOMPARE(int(allRobotSpecs().size()), 6);
+    QCOMPARE(findRobotSpec("kr6_r900_sixx")->display_name, std::string_view("KR 6 R900 sixx"));
+    QCOMPARE(findRobotSpec("kr16_2")->display_name, std::string_view("KR 16-2"));
+    for (XmateType t : allRobotTypes()) QCOMPARE(robotSpec(t).family, RobotFamily::kXmate);
+  }
+
+  // KUKA's own check values: flange position (mm) and A B C (deg) at given A1..A6 (deg).
+  void kukaFkCheckValues() {
+    const RobotSpec& kr6 = *findRobotSpec("kr6_r900_sixx");
+    const RobotSpec& kr16 = *findRobotSpec("kr16_2");
+    const ArmModel arm6 = makeArmModel(loadRobotChain(kr6), kr6);
+    const ArmModel arm16 = makeArmModel(loadRobotChain(kr16), kr16);
+    struct Check {
+      const ArmModel* arm;
+      JointVector q;
+      Eigen::Vector3d mm;
+    };
+    const Check checks[] = {
+        {&arm6, fromDegrees({0, -90, 90, 0, 90, 0}), {445, 0, 810}},
+        {&arm16, fromDegrees({0, -90, 90, 0, 90, 0}), {930, 0, 1162}},
+        {&arm6, fromDegrees({30, -60, 100, 20, 40, 10}), {521.75, -321.54, 474.47}},
+    };
+    for (const Check& c : checks) {
+      const Eigen::Vector3d got = 1000.0 * flangePose(*c.arm, c.q).translation();
+      QVERIFY2((got - c.mm).cwiseAbs().maxCoeff() < 0.01,
+               qPrintable(QString("flange at %1 %2 %3 mm, expected %4 %5 %6")
+                              .arg(got.x(), 0, 'f', 4).arg(got.y(), 0, 'f', 4).arg(got.z(), 0, 'f', 4)
+                              .arg(c.mm.x()).arg(c.mm.y()).arg(c.mm.z())));
+    }
+    // Orientation of the first check: A B C = (180, 0, 180) deg, R = Rz(A) Ry(B) Rx(C).
+    const AbcAngles abc = abcFromRotation(flangePose(arm6, checks[0].q).linear());
+    QVERIFY(angleDifferenceDeg(abc.a * 180 / kPi, 180) < 1e-9);
+    QVERIFY(angleDifferenceDeg(abc.b * 180 / kPi, 0) < 1e-9);
+    QVERIFY(angleDifferenceDeg(abc.c * 180 / kPi, 180) < 1e-9);
+    const Eigen::Matrix3d expected = rotationFromAbc({kPi, 0, kPi});
+    QVERIFY((flangePose(arm6, checks[0].q).linear() - expected).cwiseAbs().maxCoeff() < 1e-12);
+    QVERIFY((flangePose(arm16, checks[1].q).linear() - expected).cwiseAbs().maxCoeff() < 1e-12);
+    // The last check also through the DH table alone.
+    QVERIFY((1000.0 * dhFlangePose(kr6, toArray(checks[2].q)).translation() - checks[2].mm).cwiseAbs().maxCoeff() < 0.01);
+  }
+
+  void kukaFkMatchesDhTable_data() { addKukaRows(); }
+  void kukaFkMatchesDhTable() {
+    const RobotSpec& spec = fetchKukaSpec();
+    const ArmModel arm = makeArmModel(loadRobotChain(spec), spec);
+    QVERIFY(arm.geometry.kind == IkGeometry::kOffsetWrist);
+    QCOMPARE(arm.family, RobotFamily::kKuka);
+    std::mt19937 rng(31);
+    double worst = 0;
+    for (int k = 0; k < 1000; ++k) {
+      const JointVector q = randomConfiguration(spec, rng);
+      const Eigen::Isometry3d expected = dhFlangePose(spec, toArray(q));
+      LinkFrames frames;
+      forwardKinematics(arm, q, frames);
+      const auto dh = dhFrames(spec, q);
+      for (int i = 0; i < spec.dof; ++i) {  // link i: DH frame i-1 turned by theta_i + sign_i q_i
+        Eigen::Isometry3d link = dh[i];
+        link.rotate(Eigen::AngleAxisd(spec.dh[i].theta + spec.dh[i].axis_sign * q[i], Eigen::Vector3d::UnitZ()));
+        worst = std::max({worst, positionError(frames.links[i], link), rotationError(frames.links[i], link)});
+      }
+      worst = std::max({worst, positionError(frames.flange, expected), rotationError(frames.flange, expected)});
+      worst = std::max(worst, positionError(frames.flange, dh[spec.dof]));
+    }
+    qInfo("worst FK difference from the DH table: %.3g", worst);
+    QVERIFY(worst < 1e-9);
+    // A positive A1 turns the arm clockwise seen from above (about -z).
+    JointVector q = fromDegrees({10, -90, 90, 0, 90, 0});
+    QVERIFY(flangePose(arm, q).translation().y() < 0);
+  }
+
+  void kukaJacobianMatchesFiniteDifferences_data() { addKukaRows(); }
+  void kukaJacobianMatchesFiniteDifferences() {
+    const RobotSpec& spec = fetchKukaSpec();
+    ArmModel arm = makeArmModel(loadRobotChain(spec), spec);
+    Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();
+    tool.rotate(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 1, 0).normalized()));
+    tool.translation() = Eigen::Vector3d(0.02, 0.01, 0.15);
+    setTool(arm, tool);
+    constexpr double h = 1e-6;
+    std::mt19937 rng(32);
+    double worst = 0;
+    for (int k = 0; k < 200; ++k) {
+      const JointVector q = randomConfiguration(spec, rng);
+      const Jacobian jac = tcpJacobian(arm, q);
+      for (int i = 0; i < spec.dof; ++i) {
+        JointVector plus = q, minus = q;
+        plus[i] += h;
+        minus[i] -= h;
+        const Eigen::Isometry3d tp = tcpPose(arm, plus), tm = tcpPose(arm, minus);
+        Eigen::Matrix<double, 6, 1> expected;
+        expected.head<3>() = (tp.translation() - tm.translation()) / (2 * h);
+        expected.tail<3>() = angularDifference(tp.linear(), tm.linear(), h);
+        worst = std::max(worst, (jac.col(i) - expected).cwiseAbs().maxCoeff());
+      }
+    }
+    qInfo("worst Jacobian difference from central differences: %.3g", worst);
+    QVERIFY(worst < 1e-6);
+  }
+
+  // Every branch the IK returns reaches the pose; the branch holding the original q gives it back;
+  // inverseKinematics from q itself (and from far away) solves within the limits.
+  void kukaIkAllBranches_data() { addKukaRows(); }
+  void kukaIkAllBranches() {
+    const RobotSpec& spec = fetchKukaSpec();
+    ArmModel arm = makeArmModel(loadRobotChain(spec), spec);
+    setSpeedCheckInterval(arm, 0);
+    Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();
+    tool.translation() = Eigen::Vector3d(0.01, -0.02, 0.12);
+    tool.rotate(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitY()));
+    std::mt19937 rng(33);
+    const int samples = std::min(roundTripSamples(), 50000);
+    int excluded = 0, eight = 0;
+    double worst_branch = 0, worst_q = 0, worst_far = 0;
+    for (int k = 0; k < samples; ++k) {
+      if (k == samples / 2) setTool(arm, tool);  // the second half through a tool
+      const JointVector q = randomConfiguration(spec, rng);
+      if (kukaSingularityDistance(spec, q) < kExclusionDistance) {
+        ++excluded;
+        continue;
+      }
+      const Eigen::Isometry3d target = tcpPose(arm, q);
+      IkBranchSolutions branches;
+      const IkStatus status = inverseKinematicsBranches(arm, target.matrix(), 0, q, branches);
+      if (status != IkStatus::kOk) QFAIL(qPrintable(QString("sample %1: %2").arg(k).arg(ikStatusText(status))));
+      if (branches.count == 8) ++eight;
+      double nearest = 1e9;
+      for (int b = 0; b < branches.count; ++b) {
+        const IkBranchSolution& s = branches.items[b];
+        const Eigen::Isometry3d reached = tcpPose(arm, s.q);
+        worst_branch = std::max({worst_branch, positionError(reached, target), rotationError(reached, target)});
+        bool inside = true;
+        for (int i = 0; i < spec.dof; ++i) inside = inside && s.q[i] >= arm.lower[i] - 1e-12 && s.q[i] <= arm.upper[i] + 1e-12;
+        QCOMPARE(s.within_limits, inside);
+        nearest = std::min(nearest, (s.q - q).cwiseAbs().maxCoeff());
+      }
+      worst_q = std::max(worst_q, nearest);
+      JointVector out;
+      QCOMPARE(inverseKinematics(arm, target.matrix(), 0, q, out), IkStatus::kOk);
+      worst_q = std::max(worst_q, (out - q).cwiseAbs().maxCoeff());
+      const JointVector far = randomConfiguration(spec, rng);
+      QCOMPARE(inverseKinematics(arm, target.matrix(), 0, far, out), IkStatus::kOk);
+      const Eigen::Isometry3d reached = tcpPose(arm, out);
+      worst_far = std::max({worst_far, positionError(reached, target), rotationError(reached, target)});
+      for (int i = 0; i < spec.dof; ++i) QVERIFY(out[i] >= spec.q_min[i] && out[i] <= spec.q_max[i]);
+    }
+    qInfo("%d samples, %d near a singularity excluded, %d with all 8 branches; worst branch pose error %.3g, "
+          "worst joint error %.3g, far q_init pose error %.3g",
+          samples, excluded, eight, worst_branch, worst_q, worst_far);
+    QVERIFY(double(excluded) / samples < 0.005);
+    QVERIFY(eight > samples / 2);
+    QVERIFY(worst_branch < 1e-9);
+    QVERIFY(worst_q < 1e-9);
+    QVERIFY(worst_far < 1e-9);
+  }
+
+  // The 8 branches are distinct: shoulder front/back (A1 differs by pi), elbow up/down, wrist flip
+  // (A5 changes sign).
+  void kukaIkBranchesAreDistinct_data() { addKukaRows(); }
+  void kukaIkBranchesAreDistinct() {
+    const RobotSpec& spec = fetchKukaSpec();
+    const ArmModel arm = makeArmModel(loadRobotChain(spec), spec);
+    const JointVector q = fromDegrees({20, -90, 120, 30, 50, 40});  // wrist centre near enough for the back branches
+    IkBranchSolutions branches;
+    QCOMPARE(inverseKinematicsBranches(arm, flangePose(arm, q).matrix(), 0, q, branches), IkStatus::kOk);
+    QCOMPARE(branches.count, 8);
+    int positive_q5 = 0;
+    for (int a = 0; a < 8; ++a) {
+      positive_q5 += std::remainder(branches.items[a].q[4], 2 * kPi) > 0;  // unwrapped: out-of-range branches may be shifted by 2 pi
+      for (int b = a + 1; b < 8; ++b) {
+        JointVector d = branches.items[a].q - branches.items[b].q;
+        for (int i = 0; i < 6; ++i) d[i] = std::remainder(d[i], 2 * kPi);
+        QVERIFY(d.cwiseAbs().maxCoeff() > 1e-3);
+      }
+    }
+    QCOMPARE(positive_q5, 4);
+  }
+
+  // The offset-wrist solver is general: on the xMate 6-axis tables (offsets 0) it must give the
+  // same branches as the xMates' own solver.
+  void offsetWristSolverAgreesOnXmateSixAxis() {
+    for (XmateType t : {XMATE3, XMATE7}) {
+      const RobotSpec& spec = robotSpec(t);
+      const ArmModel six = makeArmModel(chainFromDh(spec), spec);
+      ArmModel offset = six;
+      offset.geometry.kind = IkGeometry::kOffsetWrist;
+      for (int i = 0; i < 6; ++i) offset.geometry.dh[i] = spec.dh[i];
+      std::mt19937 rng(34 + t);
+      int compared = 0;
+      for (int k = 0; k < 2000; ++k) {
+        const JointVector q = randomConfiguration(spec, rng);
+        if (singularityDistance(spec, q) < kExclusionDistance) continue;
+        const Eigen::Matrix4d pose = flangePose(six, q).matrix();
+        IkBranchSolutions a, b;
+        QCOMPARE(inverseKinematicsBranches(six, pose, 0, q, a), IkStatus::kOk);
+        QCOMPARE(inverseKinematicsBranches(offset, pose, 0, q, b), IkStatus::kOk);
+        QCOMPARE(a.count, b.count);
+        for (int i = 0; i < a.count; ++i) {  // the same set of solutions (mod 2 pi), in any order
+          double nearest = 1e9;
+          for (int j = 0; j < b.count; ++j) {
+            double d = 0;
+            for (int n = 0; n < 6; ++n) d = std::max(d, std::abs(wrapAngle(a.items[i].q[n] - b.items[j].q[n])));
+            nearest = std::min(nearest, d);
+          }
+          QVERIFY2(nearest < 1e-9, qPrintable(QString("sample %1 branch %2: %3 rad").arg(k).arg(i).arg(nearest)));
+        }
+        ++compared;
+      }
+      QVERIFY(compared > 1900);
+    }
+  }
+
+  // A6 spans +-350 deg: q and q - 2 pi are both in range; the IK keeps the one nearest q_init.
+  void kukaIkPicksNearestTwoPiEquivalent_data() { addKukaRows(); }
+  void kukaIkPicksNearestTwoPiEquivalent() {
+    const RobotSpec& spec = fetchKukaSpec();
+    ArmModel arm = makeArmModel(loadRobotChain(spec), spec);
+    setSpeedCheckInterval(arm, 0);
+    JointVector q = fromDegrees({20, -70, 80, 30, 50, 0});
+    q[5] = 5.0;
+    const Eigen::Matrix4d pose = flangePose(arm, q).matrix();
+    JointVector out;
+    QCOMPARE(inverseKinematics(arm, pose, 0, q, out), IkStatus::kOk);
+    QVERIFY(std::abs(out[5] - 5.0) < 1e-9);
+    JointVector q_init = q;
+    q_init[5] = 5.0 - 2 * kPi;
+    QCOMPARE(inverseKinematics(arm, pose, 0, q_init, out), IkStatus::kOk);
+    QVERIFY(std::abs(out[5] - (5.0 - 2 * kPi)) < 1e-9);
+  }
+
+  void kukaIkReturnCodes_data() { addKukaRows(); }
+  void kukaIkReturnCodes() {
+    const RobotSpec& spec = fetchKukaSpec();
+    ArmModel arm = makeArmModel(loadRobotChain(spec), spec);
+    setSpeedCheckInterval(arm, 0);
+    const JointVector regular = fromDegrees({20, -70, 80, 30, 50, 40});
+    JointVector out = JointVector::Constant(42);
+    auto codeAt = [&](const JointVector& q) { return inverseKinematics(arm, flangePose(arm, q).matrix(), 0, q, out); };
+    QCOMPARE(codeAt(regular), IkStatus::kOk);
+    // Beyond reach: 3 m away.
+    Eigen::Matrix4d far = Eigen::Matrix4d::Identity();
+    far.topRightCorner<3, 1>() = Eigen::Vector3d(3.0, 0, 0.5);
+    JointVector untouched = JointVector::Constant(42);
+    out = untouched;
+    QCOMPARE(inverseKinematics(arm, far, 0, regular, out), IkStatus::kBeyondReach);
+    QVERIFY(out == untouched);
+    // Invalid pose.
+    Eigen::Matrix4d bad = flangePose(arm, regular).matrix();
+    bad(0, 0) *= 1.01;
+    QCOMPARE(inverseKinematics(arm, bad, 0, regular, out), IkStatus::kInvalidPose);
+    // Wrist singular: A5 = 0 (A4 and A6 coaxial); just outside the band it solves.
+    JointVector wrist = regular;
+    wrist[4] = 0;
+    QCOMPARE(codeAt(wrist), IkStatus::kSingular);
+    wrist[4] = 1e-4;
+    QCOMPARE(codeAt(wrist), IkStatus::kOk);
+    // Shoulder singular: wrist centre on the A1 axis. Solve A2 for the wrist centre's x = 0.
+    JointVector shoulder = regular;
+    auto wristX = [&](double a2) {  // the wrist centre's horizontal distance in the arm's plane
+      JointVector t = shoulder;
+      t[1] = a2;
+      const Eigen::Vector3d w = kukaWristCentre(spec, t);
+      return w.x() * std::cos(shoulder[0]) - w.y() * std::sin(shoulder[0]);
+    };
+    double lo = spec.q_min[1], hi = lo;  // bracket a sign change of wristX over A2's range
+    for (double a2 = spec.q_min[1] + 0.01; a2 <= spec.q_max[1]; a2 += 0.01) {
+      if (wristX(lo) * wristX(a2) <= 0) {
+        hi = a2;
+        break;
+      }
+      lo = a2;
+    }
+    QVERIFY(hi > lo);
+    for (int it = 0; it < 200; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (wristX(lo) * wristX(mid) <= 0 ? hi : lo) = mid;
+    }
+    shoulder[1] = 0.5 * (lo + hi);
+    const Eigen::Vector3d w = kukaWristCentre(spec, shoulder);
+    QVERIFY(std::hypot(w.x(), w.y()) < 1e-9);
+    QCOMPARE(codeAt(shoulder), IkStatus::kSingular);
+    // Soft limits: a band for A1 above q1 reports kBelowSoftLimit.
+    JointVector lower = arm.hardware_lower, upper = arm.hardware_upper;
+    lower[0] = regular[0] + 0.1;
+    upper[0] = regular[0] + 0.3;
+    setSoftLimits(arm, lower, upper);
+    QCOMPARE(codeAt(regular), IkStatus::kBelowSoftLimit);
   }
 };
 

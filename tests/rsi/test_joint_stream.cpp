@@ -7,7 +7,6 @@
 
 #include <atomic>
 #include <thread>
-#include <vector>
 
 #include "model/robot_spec.h"
 #include "rsi/joint_stream.h"
@@ -25,9 +24,12 @@ const model::RobotSpec& arm() { return *model::findRobotSpec("xmate3"); }
 
 AxisCorrectionLimits wideLimits() {
   AxisCorrectionLimits l;
-  l.object = "AXISCORR1";
   l.lower.fill(-90 / kDeg);
   l.upper.fill(90 / kDeg);
+  for (int i = 0; i < 6; ++i) {
+    l.lower_by[size_t(i)] = "AXISCORR1's LowerLimA" + std::to_string(i + 1);
+    l.upper_by[size_t(i)] = "AXISCORR1's UpperLimA" + std::to_string(i + 1);
+  }
   return l;
 }
 
@@ -64,9 +66,9 @@ class TestJointStream : public QObject {
 
 void TestJointStream::limitsComeFromTheContext() {
   const AxisCorrectionLimits sample = axisCorrectionLimits(readContext(dataPath("resources/rsi/rci_axis_corr.rsi.xml")));
-  QCOMPARE(sample.object, std::string("AXISCORR1"));
   QCOMPARE(sample.lower[0] * kDeg, -5.0);
   QCOMPARE(sample.upper[5] * kDeg, 5.0);
+  QCOMPARE(sample.upper_by[5], std::string("AXISCORR1's UpperLimA6"));
   const std::string no_axiscorr =
       "<RSIObjects><RSIObject ObjType=\"ETHERNET\" ObjID=\"ETHERNET1\"><Parameters><Parameter Name=\"ConfigFile\" "
       "ParamValue=\"x.xml\"/></Parameters></RSIObject></RSIObjects>";
@@ -76,6 +78,18 @@ void TestJointStream::limitsComeFromTheContext() {
   } catch (const ConfigError& e) {
     QVERIFY2(QString(e.what()).startsWith("cell.rsi.xml: the context has no AXISCORR object"), e.what());
   }
+  // A monitor tighter than the clamp sets the limit (it would stop RSI there).
+  const std::string monitored =
+      "<RSIObjects><RSIObject ObjType=\"ETHERNET\" ObjID=\"ETHERNET1\"><Parameters><Parameter Name=\"ConfigFile\" "
+      "ParamValue=\"x.xml\"/></Parameters></RSIObject><RSIObject ObjType=\"AXISCORR\" ObjID=\"AXISCORR1\"><Parameters>"
+      "<Parameter Name=\"UpperLimA2\" ParamValue=\"90\"/><Parameter Name=\"LowerLimA2\" ParamValue=\"-90\"/>"
+      "</Parameters></RSIObject><RSIObject ObjType=\"AXISCORRMON\" ObjID=\"MON\"><Parameters>"
+      "<Parameter Name=\"MaxA2\" ParamValue=\"30\"/></Parameters></RSIObject></RSIObjects>";
+  const AxisCorrectionLimits m = axisCorrectionLimits(parseContext(monitored, "cell.rsi.xml"));
+  QCOMPARE(m.upper[1] * kDeg, 30.0);
+  QCOMPARE(m.lower[1] * kDeg, -30.0);
+  QCOMPARE(m.upper_by[1], std::string("MON's MaxA2"));
+  QCOMPARE(m.upper[0] * kDeg, 5.0);  // not monitored: AXISCORR's default
   const std::string bad =
       "<RSIObjects><RSIObject ObjType=\"ETHERNET\" ObjID=\"ETHERNET1\"><Parameters><Parameter Name=\"ConfigFile\" "
       "ParamValue=\"x.xml\"/></Parameters></RSIObject>\n<RSIObject ObjType=\"AXISCORR\" ObjID=\"AXISCORR1\"><Parameters>"
@@ -158,19 +172,19 @@ void TestJointStream::checksNameTheAxisTheLimitAndTheValue() {
   AxisCorrectionLimits limits = wideLimits();
   limits.upper[1] = 5 / kDeg;
   JointStream stream(link, arm(), limits);
-  const std::array<double, 6> on{};
-  std::vector<double> q(6 * 3, 0.0);
-  QCOMPARE(stream.checkSamples(q.data(), 3, on), std::string());
-  q[6 + 1] = q[12 + 1] = 6 / kDeg;  // A2 6 deg in one cycle: too fast, and beyond UpperLimA2
-  QVERIFY2(QString::fromStdString(stream.checkSamples(q.data(), 3, on)).startsWith("A2 would move at"),
-           stream.checkSamples(q.data(), 3, on).c_str());
-  q[1] = 6 / kDeg;  // no longer fast, still beyond the correction limit
-  const QString beyond = QString::fromStdString(stream.checkSamples(q.data(), 3, on));
+  const double dt = stream.cycleSeconds();
+  const std::array<double, 6> on{}, zero{};
+  std::array<double, 6> q{};
+  QCOMPARE(stream.checkSample(q.data(), zero.data(), dt, on), std::string());
+  q[1] = 6 / kDeg;  // A2 6 deg in one cycle: too fast, and beyond UpperLimA2
+  const QString fast = QString::fromStdString(stream.checkSample(q.data(), zero.data(), dt, on));
+  QVERIFY2(fast.startsWith("A2 would move at 1500.0 deg/s, above its rated"), qPrintable(fast));
+  const QString beyond = QString::fromStdString(stream.checkSample(q.data(), nullptr, dt, on));
   QVERIFY2(beyond.startsWith("A2 would need a correction of 6.00 deg") && beyond.contains("UpperLimA2 = 5.0 deg"),
            qPrintable(beyond));
-  std::vector<double> out(6, 0.0);
+  std::array<double, 6> out{};
   out[2] = arm().q_max[2] + 0.01;
-  const QString range = QString::fromStdString(stream.checkSamples(out.data(), 1, on));
+  const QString range = QString::fromStdString(stream.checkSample(out.data(), nullptr, dt, on));
   QVERIFY2(range.startsWith("A3 would reach") && range.contains("outside its range"), qPrintable(range));
 }
 

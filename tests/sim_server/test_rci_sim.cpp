@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 // Tests of the rci-sim program: --print-port and a working session, the status line, the control
-// port, option validation and its messages, the non-loopback warning, and clean shutdown.
+// port, option validation and its messages, the non-loopback warning, and clean shutdown; with --rsi
+// the simulated KRC sends <Rob> datagrams to a PC played by the test and says RSITimeout when the
+// PC falls silent.
 #include <QProcess>
 #include <QtTest>
 
 #include <csignal>
 
 #include "ft/netft.h"
+#include "net/udp_socket.h"
 #include "raw_client.h"
+#include "rsi/codec.h"
+#include "rsi/config.h"
 
 using namespace simtest;
 using namespace xmate;
@@ -146,8 +151,8 @@ class TestRciSim : public QObject {
   }
 
   // The command line is CLI11's: --opt=value as well as --opt value; every typed option range-checked;
-  // a missing value or a stray argument is a usage error (2) that says so. rci-sim has no options
-  // that exclude each other.
+  // a missing value or a stray argument is a usage error (2) that says so. The --rsi-* options need
+  // --rsi (rsiOptionsAreChecked); no other options exclude each other.
   void optionSyntaxAndValueChecks() {
     Finished r = runToEnd({"--port=70000"});
     QCOMPARE(r.exit_code, 2);
@@ -179,11 +184,113 @@ class TestRciSim : public QObject {
     QVERIFY2(r.out.contains("--lockstep-timeout MS") && r.out.contains("--control-bind IP"), qPrintable(r.out));
   }
 
+  // rci-sim --rsi: the simulated KRC sends a <Rob> every cycle from its own port to the target, takes
+  // the answers, and when the PC falls silent stops RSI with RSITimeout, then starts a new session.
+  void rsiSendsRobsAndSaysRsiTimeoutWhenNobodyAnswers() {
+    const std::string data = qEnvironmentVariable("RCI_DATA_DIR").toStdString();
+    const rsi::EthernetConfig config = rsi::readEthernetConfig(data + "/resources/rsi/RSI_EthernetConfig.xml");
+    rsi::RobDecoder rob(config);
+    rsi::SenEncoder sen(config);
+    net::UdpSocket pc;
+    pc.bind("127.0.0.1", 0);
+    QProcess sim;
+    sim.start(RCI_SIM_PATH, {"--rsi", QString::fromStdString(data + "/resources/rsi/rci_axis_corr.rsi.xml"),
+                             "--rsi-target", QString("127.0.0.1:%1").arg(pc.localPort()), "--no-realtime",
+                             "--print-port", "--rsi-restart-pause", "100"});
+    QVERIFY(sim.waitForStarted());
+    const uint16_t krc_port = uint16_t(readLine(sim).toUInt());
+    QVERIFY(krc_port != 0);
+    const QString status = readLine(sim);
+    QVERIFY2(status.startsWith(QString("rci-sim: KR 6 R900 sixx (KUKA RSI) on 127.0.0.1:%1, sending <Rob> to "
+                                       "127.0.0.1:%2 every 4 ms, #ABSOLUTE, Timeout 100").arg(krc_port).arg(pc.localPort())),
+             qPrintable(status));
+
+    // Answer 20 <Rob> like a PC (to their source), then fall silent.
+    char buffer[rsi::kMaxDatagramBytes];
+    for (int i = 0; i < 20; ++i) {
+      net::Endpoint from;
+      const long n = pc.receiveFrom(buffer, sizeof buffer, &from, 10'000'000);
+      QVERIFY(n > 0);
+      QCOMPARE(ntohs(from.addr.sin_port), krc_port);  // one socket sends and receives
+      const std::string datagram(buffer, size_t(n));
+      QVERIFY2(datagram.rfind("<Rob Type=\"ImFree\">", 0) == 0, datagram.c_str());
+      QVERIFY2(rob.decode(datagram), rob.reason());
+      char answer[rsi::kMaxSenBytes];
+      const size_t m = sen.encode(rob.ipocText(), answer, sizeof answer);
+      QCOMPARE(pc.sendTo(from, answer, m), long(m));
+    }
+    QCOMPARE(rob.value(rob.slot("AIPos", "A2")), -90.0);
+    sim.setReadChannel(QProcess::StandardError);
+    QString err;
+    while (!err.contains("session 2") && sim.waitForReadyRead(20000)) err += sim.readAllStandardError();
+    QVERIFY2(err.contains("Signal flow (running): Object ETHERNET1 returns error RSITimeout (101 late answers in a row, "
+                          "Timeout 100); RSI stopped, the arm holds"),
+             qPrintable(err));
+    QVERIFY2(err.contains("RSI_ON(#ABSOLUTE): session 2"), qPrintable(err));
+    QCOMPARE(terminate(sim), 0);
+  }
+
+  // rci-sim --rsi --ft-sensor: the sensor reads the wrench pushed on the simulated arm, in the flange
+  // frame (the KR 6's flange at the start pose is turned 180 deg about y of the base: z points down).
+  void rsiFtSensorReadsTheArmsWrench() {
+    const std::string data = qEnvironmentVariable("RCI_DATA_DIR").toStdString();
+    QProcess sim;
+    sim.start(RCI_SIM_PATH, {"--rsi", QString::fromStdString(data + "/resources/rsi/rci_axis_corr.rsi.xml"),
+                             "--rsi-target", "127.0.0.1:9", "--no-realtime", "--ft-sensor", "0", "--external-wrench",
+                             "0,0,-20,0,0,0"});
+    QVERIFY(sim.waitForStarted());
+    QVERIFY(readLine(sim).startsWith("rci-sim: KR 6 R900 sixx (KUKA RSI)"));
+    const QRegularExpressionMatch m =
+        QRegularExpression("^rci-sim: F/T sensor \\(Net F/T, RDT\\) on 127\\.0\\.0\\.1:(\\d+), reading the arm's external wrench$")
+            .match(readLine(sim));
+    QVERIFY(m.hasMatch());
+    ft::NetFtOptions options;
+    options.host = "127.0.0.1";
+    options.port = uint16_t(m.captured(1).toUInt());
+    ft::NetFtClient client(options);
+    client.start();
+    ft::Wrench w;
+    QTRY_VERIFY_WITH_TIMEOUT(client.latest(w) && std::abs(w.values[2] - 20) < 1e-3, 10000);
+    QVERIFY(std::abs(w.values[0]) < 1e-3 && std::abs(w.values[1]) < 1e-3);
+    client.stop();
+    QCOMPARE(terminate(sim), 0);
+  }
+
+  void rsiOptionsAreChecked() {
+    Finished r = runToEnd({"--rsi-target", "127.0.0.1:49152"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--rsi-target needs --rsi CONTEXT.rsi.xml"), qPrintable(r.err));
+    r = runToEnd({"--model", "kr16_2"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--model kr16_2 is a KUKA arm: it runs over RSI; give --rsi CONTEXT.rsi.xml"), qPrintable(r.err));
+    r = runToEnd({"--rsi", "x.rsi.xml", "--cycle-ms", "5"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--cycle-ms takes 4 (#IPO_FAST) or 12, got '5'"), qPrintable(r.err));
+    r = runToEnd({"--rsi", "x.rsi.xml", "--rsi-mode", "sideways"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--rsi-mode takes absolute or relative, got 'sideways'"), qPrintable(r.err));
+    r = runToEnd({"--rsi", "x.rsi.xml", "--rsi-target", "127.0.0.1"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--rsi-target takes HOST:PORT"), qPrintable(r.err));
+    r = runToEnd({"--rsi", "x.rsi.xml", "--start-joints-deg", "0,-90,90"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("--start-joints-deg takes 6 numbers separated by commas"), qPrintable(r.err));
+    r = runToEnd({"--rsi", "/nonexistent/x.rsi.xml", "--no-realtime"});
+    QCOMPARE(r.exit_code, 1);
+    QVERIFY2(r.err.contains("/nonexistent/x.rsi.xml"), qPrintable(r.err));
+    const std::string data = qEnvironmentVariable("RCI_DATA_DIR").toStdString();
+    r = runToEnd({"--rsi", QString::fromStdString(data + "/resources/rsi/rci_axis_corr.rsi.xml"), "--no-realtime",
+                  "--start-joints-deg", "0,-90,90,0,170,0"});
+    QCOMPARE(r.exit_code, 1);
+    QVERIFY2(r.err.contains("A5 = 170") && r.err.contains("outside its range"), qPrintable(r.err));
+  }
+
   void helpListsTheOptions() {
     const Finished r = runToEnd({"--help"});
     QCOMPARE(r.exit_code, 0);
     for (const char* option : {"--model", "--bind", "--port", "--print-port", "--lockstep", "--control-port",
-                               "--loopback-io", "--no-realtime", "--connect-timeout", "--idle-timeout"})
+                               "--loopback-io", "--no-realtime", "--connect-timeout", "--idle-timeout", "--rsi",
+                               "--rsi-target", "--rsi-mode", "--cycle-ms", "--start-joints-deg", "--rsi-restart-pause"})
       QVERIFY2(r.out.contains(option), option);
   }
 

@@ -40,17 +40,22 @@ expect 2 "NAME: unknown model 'xmate9'" model xmate9
 # Unknown options and commands, extra arguments.
 expect 2 "state: unknown option '--frobnicate'" state --robot 127.0.0.1:1 --frobnicate
 expect 2 "unknown command 'frob' (known: model, state, run, doctor, bench, ft, help)" frob
-expect 2 "unknown bench 'fast' (known: loop, client)" bench fast
+expect 2 "unknown bench 'fast' (known: loop, client, rsi)" bench fast
 expect 2 "model: unexpected argument 'xmate3'" model xmate7 xmate3
 # Missing values and missing required arguments.
 expect 2 "--robot needs a value" state --robot
 expect 2 "--cycles needs a value" bench loop --cycles
-expect 2 "state needs --robot HOST:PORT" state --count 3
+expect 2 "state needs --robot HOST:PORT (an xMate) or --robot rsi:ETHERNET.xml (a KUKA over RSI)" state --count 3
 expect 2 "run needs --robot sim or --robot HOST:PORT" run p.json
 expect 2 "run needs a program file (PROGRAM.json)" run --robot sim
-expect 2 "bench needs 'loop' or 'client'" bench
+expect 2 "bench needs 'loop', 'client' or 'rsi'" bench
 # Options that exclude each other.
 expect 2 "--fast applies to the in-process simulator (--robot sim)" run p.json --robot 127.0.0.1:1 --fast
+# run on a KUKA over RSI: the RSI options only with rsi:, a cycle of 4 or 12 ms.
+expect 2 "--bind, --port, --context and --cycle-ms apply to a KUKA over RSI" run p.json --robot sim --context c.rsi.xml
+expect 2 "--cycle-ms" run p.json --robot rsi-sim --cycle-ms 5
+expect 2 "--robot 'rsi-sim': this command needs a robot" state --robot rsi-sim
+expect 2 "--robot 'rsi:': no file; write rsi:ETHERNET.xml" run p.json --robot rsi:
 expect 2 "--lockstep applies to the in-process simulator (--robot sim)" bench loop --robot 127.0.0.1:1 --lockstep
 # A usage error is followed by the usage of the command it is about.
 expect 2 "Usage: rci-cli bench loop [OPTIONS]" bench loop --cycles 5
@@ -67,6 +72,24 @@ expect 2 "--sensor is required" ft
 expect 2 "--count takes a whole number from 1 to 100000000, got '0'" ft --sensor 127.0.0.1 --count 0
 expect 0 "--counts-per-unit C" ft --help
 expect 1 "no data from the F/T sensor at 127.0.0.1:9 within 2 s" ft --sensor 127.0.0.1:9 --count 1
+# state over RSI (--robot rsi:FILE): a KUKA model is required, and the RSI options only go with it.
+expect 2 "--robot rsi:... needs --model NAME, the KUKA arm: kr6_r900_sixx, kr16_2" state --robot rsi:x.xml
+expect 2 "--model 'xmate7_pro' is not a KUKA model; with --robot rsi:... choose one of: kr6_r900_sixx, kr16_2" \
+  state --robot rsi:x.xml --model xmate7_pro
+expect 2 "--model 'kr16_2' is a KUKA arm, which speaks RSI: write --robot rsi:ETHERNET.xml" \
+  state --robot 127.0.0.1:1 --model kr16_2
+expect 2 "--model: unknown model 'ur5'; choose one of: xmate3_pro, xmate7_pro, xmate3, xmate7 (xMate, --robot HOST:PORT) or kr6_r900_sixx, kr16_2 (KUKA, --robot rsi:ETHERNET.xml)" \
+  state --robot rsi:x.xml --model ur5
+expect 2 "--bind applies to a KUKA over RSI (--robot rsi:ETHERNET.xml)" state --robot 127.0.0.1:1 --bind 127.0.0.1
+expect 2 "--port applies to a KUKA over RSI (--robot rsi:ETHERNET.xml)" state --robot 127.0.0.1:1 --port 5
+expect 2 "--robot 'rsi:': no file; write rsi:ETHERNET.xml" state --robot rsi: --model kr16_2
+expect 2 "--bind takes an IPv4 address of this PC (e.g. 192.168.1.20, or 0.0.0.0 for every address), got 'pc'" \
+  state --robot rsi:x.xml --model kr16_2 --bind pc
+expect 2 "--port takes a whole number from 0 to 65535, got '70000'" state --robot rsi:x.xml --model kr16_2 --port 70000
+expect 2 "--cycles takes a whole number from 100 to 100000000, got '5'" bench rsi --cycles 5
+expect 1 "x.xml: cannot open" state --robot rsi:x.xml --model kr16_2
+expect 0 "--wait S" state --help
+expect 0 "tinyxml2" bench rsi --help
 # The default and a model, with --opt=value and --opt value (no robot needed).
 expect 0 "xMate Pro 7 (xmate7_pro), 7 axes"
 expect 0 "xMate 3 (xmate3), 6 axes" model xmate3

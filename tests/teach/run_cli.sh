@@ -3,7 +3,8 @@
 # test_cli_run: `rci-cli run` on the example program against the in-process simulator exits 0 and
 # writes a finished report, on the real-time clock by default and on the lock-step clock with
 # --fast, and says which clock ran; a usage error exits 2; a program refused by the pre-flight
-# exits 1 without moving. Arguments: RCI_CLI EXAMPLE_PROGRAM WORK_DIR.
+# exits 1 without moving; the KUKA example runs over RSI on the in-process simulated KRC, and a
+# program of one family is refused on the other's robot. Arguments: RCI_CLI EXAMPLE_PROGRAM WORK_DIR.
 set -u
 cli=$1 example=$2 work=$3
 report=$work/cli_run_report.json
@@ -39,4 +40,18 @@ out=$("$cli" run "$bad" --robot sim --report "$report" 2>&1)
 [ $? -eq 1 ] || fail "an unreachable program should exit 1; output: $out"
 echo "$out" | grep -q 'instruction 2 (MOVEL "P2")' || fail "the refusal does not name instruction 2: $out"
 grep -q '"outcome": "refused"' "$report" || fail "report of the refused run is not 'refused'"
-echo "6 passed, 0 failed"
+
+# A KUKA program over RSI, on the in-process simulated KRC; each family's program refused on the other.
+kuka=$(dirname "$example")/kr6_example.json
+out=$("$cli" run "$kuka" --robot rsi-sim --report "$report" 2>&1) || fail "run of the KUKA example exited $?: $out"
+grep -q '"robot": "kr6_r900_sixx"' "$report" || fail "the KUKA report does not name its robot: $(head -c 300 "$report")"
+grep -q '"outcome": "finished"' "$report" || fail "the KUKA run did not finish: $(head -c 400 "$report")"
+echo "$out" | grep -q 'over RSI on 127.0.0.1:[0-9]* (in-process simulated KRC), 4 ms cycle, context rci_replay.rsi.xml' ||
+  fail "the KUKA run does not say where it ran: $out"
+out=$("$cli" run "$kuka" --robot sim 2>&1)
+[ $? -eq 1 ] || fail "a KUKA program on the xMate simulator should exit 1: $out"
+echo "$out" | grep -q 'a KUKA arm: run it over RSI with --robot rsi:ETHERNET.xml' || fail "no advice for the KUKA program: $out"
+out=$("$cli" run "$example" --robot rsi-sim 2>&1)
+[ $? -eq 1 ] || fail "an xMate program on the simulated KRC should exit 1: $out"
+echo "$out" | grep -q 'an xMate: run it with --robot sim' || fail "no advice for the xMate program: $out"
+echo "9 passed, 0 failed"

@@ -76,14 +76,20 @@ const char* ikFailureText(int code) {
   return "inverse kinematics failed";
 }
 
-JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory, const model::ArmKinematics& model,
-                           const std::array<double, 7>& q_start, double speed_ratio) {
+JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory,
+                           const model::ArmKinematics& model, const std::array<double, 7>& q_start, double speed_ratio,
+                           JointSamples* joints) {
   const model::RobotSpec& spec = model.spec();
   const int dof = spec.dof;
   const double total = planning::duration(trajectory);
   const int steps = int(std::ceil(total / kDt - 1e-9));
   std::array<double, 7> q_prev = q_start, v_prev{}, a_prev{};
   JointSweep sweep;
+  if (joints) {
+    joints->clear();
+    joints->reserve(size_t(steps) + 1);
+    joints->push_back(q_start);
+  }
   for (int k = 1; k <= steps; ++k) {
     const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, k * kDt);
     std::array<double, 7> q{};
@@ -113,19 +119,20 @@ JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory
       a_prev[i] = a;
     }
     q_prev = q;
+    if (joints) joints->push_back(q);
   }
   return sweep;
 }
 
 planning::CartesianTrajectory planWithinJointLimits(const char* call, const planning::CartesianPath& path,
                                                     double speed_ratio, const model::ArmKinematics& model,
-                                                    const std::array<double, 7>& q_start) {
+                                                    const std::array<double, 7>& q_start, JointSamples* joints) {
   double timing_ratio = speed_ratio;
   JointSweep sweep;
   double total = 0, slowdown = 1;
   for (int attempt = 0; attempt < kMaxRetimes && timing_ratio >= speed_ratio / kMaxSlowdown; ++attempt) {
     planning::CartesianTrajectory trajectory = planning::timePath(path, timing_ratio);
-    sweep = sweepTrajectory(call, trajectory, model, q_start, speed_ratio);
+    sweep = sweepTrajectory(call, trajectory, model, q_start, speed_ratio, joints);
     if (sweep.worst() <= 1.0) return trajectory;
     // Too fast in joint space (typically near a singularity): slow the whole move down.
     total = planning::duration(trajectory);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include <xmate/model.h>
 #include <xmate/rci_types.h>
@@ -48,16 +49,21 @@ inline constexpr double kMaxSlowdown = 20.0;
 
 // Samples `trajectory` every 1 ms from q_start with IK (q_init = the previous sample) and measures
 // the joint rates by finite differences. Throws MotionException at the first sample IK cannot
-// reach (naming the fraction of the path, the time, the TCP position and the IK reason).
-JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory, const model::ArmKinematics& model,
-                           const std::array<double, 7>& q_start, double speed_ratio);
+// reach (naming the fraction of the path, the time, the TCP position and the IK reason). With
+// `joints`, also gives the joints every 1 ms from q_start to the end.
+using JointSamples = std::vector<std::array<double, 7>>;
+JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory& trajectory,
+                           const model::ArmKinematics& model, const std::array<double, 7>& q_start, double speed_ratio,
+                           JointSamples* joints = nullptr);
 
 // Times `path` at speed_ratio and, while the joint rates would exceed their limits, re-times it
 // slower (at most kMaxSlowdown times). Throws MotionException when it is unreachable, or when it
 // would need a slower timing than that (it passes too close to a singular pose), saying where.
+// With `joints`, also gives the returned trajectory's joints every 1 ms (sweepTrajectory).
 planning::CartesianTrajectory planWithinJointLimits(const char* call, const planning::CartesianPath& path,
                                                     double speed_ratio, const model::ArmKinematics& model,
-                                                    const std::array<double, 7>& q_start);
+                                                    const std::array<double, 7>& q_start,
+                                                    JointSamples* joints = nullptr);
 
 // "beyond the arm's reach", ... for an XmateModel::IkResult.
 const char* ikFailureText(int code);

@@ -28,7 +28,8 @@ JointPlacement placementOf(const ChainJoint& joint) {
   p.rotation = joint.origin.linear();
   p.translation = joint.origin.translation();
   p.axis = joint.axis.normalized();
-  p.axis_is_z = p.axis == Eigen::Vector3d::UnitZ();
+  p.axis_is_z = p.axis == Eigen::Vector3d::UnitZ() || p.axis == -Eigen::Vector3d::UnitZ();
+  p.z_sign = p.axis.z() < 0 ? -1.0 : 1.0;
   return p;
 }
 
@@ -40,7 +41,7 @@ bool hasSrsStructure(const RobotSpec& s) {
   for (int i = 0; i < 7; ++i) {
     const DhRow& r = s.dh[i];
     const bool d_expected_zero = i == 1 || i == 3 || i == 5;
-    if (r.a != 0 || r.theta != 0 || std::abs(r.alpha - alpha[i]) > 1e-12) return false;
+    if (r.a != 0 || r.theta != 0 || r.axis_sign != 1 || std::abs(r.alpha - alpha[i]) > 1e-12) return false;
     if (d_expected_zero != (r.d == 0)) return false;
   }
   return s.dof == 7;
@@ -52,18 +53,52 @@ bool hasSixAxisStructure(const RobotSpec& s) {
   const double d_nonzero[6] = {1, 0, 0, 1, 0, 1};
   for (int i = 0; i < 6; ++i) {
     const DhRow& r = s.dh[i];
-    if (r.theta != 0 || std::abs(r.alpha - alpha[i]) > 1e-12) return false;
+    if (r.theta != 0 || r.axis_sign != 1 || std::abs(r.alpha - alpha[i]) > 1e-12) return false;
     if ((r.a != 0) != (a_nonzero[i] != 0) || (r.d != 0) != (d_nonzero[i] != 0)) return false;
   }
   return s.dof == 6;
 }
 
+bool isQuarterTurn(double alpha) { return std::abs(std::abs(alpha) - kHalfPi) <= 1e-12; }
+
+// Ortho-parallel arm with offsets and a spherical wrist (ik_offset_wrist.cpp): J1 vertical with the
+// shoulder a1 out and d1 up, J2 and J3 parallel (upper arm a2), the forearm offset a3 across and d4
+// along the J4 axis, J4 J5 J6 meeting in one point, the flange d6 along J6. Any angle offsets and
+// axis senses.
+bool hasOffsetWristStructure(const RobotSpec& s) {
+  if (s.dof != 6) return false;
+  const auto& r = s.dh;
+  for (int i = 0; i < 6; ++i)
+    if (std::abs(r[i].axis_sign) != 1) return false;
+  return isQuarterTurn(r[0].alpha) && r[1].a > 0 && r[1].alpha == 0 && r[1].d == 0 && r[2].d == 0 &&
+         isQuarterTurn(r[2].alpha) && r[3].a == 0 && r[3].d != 0 && isQuarterTurn(r[3].alpha) && r[4].a == 0 &&
+         r[4].d == 0 && std::abs(r[4].alpha + r[3].alpha) <= 1e-12 && r[5].a == 0 && r[5].alpha == 0;
+}
+
 ArmGeometry geometryOf(const RobotSpec& spec) {
-  if (hasSrsStructure(spec)) return {spec.dh[0].d, spec.dh[2].d, spec.dh[4].d, spec.dh[6].d};
-  if (hasSixAxisStructure(spec)) return {spec.dh[0].d, spec.dh[1].a, spec.dh[3].d, spec.dh[5].d};
+  ArmGeometry g;
+  if (hasSrsStructure(spec)) {
+    g = {spec.dh[0].d, spec.dh[2].d, spec.dh[4].d, spec.dh[6].d};
+    g.kind = IkGeometry::kSrs;
+    return g;
+  }
+  if (hasSixAxisStructure(spec)) {
+    g = {spec.dh[0].d, spec.dh[1].a, spec.dh[3].d, spec.dh[5].d};
+    g.kind = IkGeometry::kSixAxis;
+    return g;
+  }
+  if (hasOffsetWristStructure(spec)) {
+    g = {spec.dh[0].d, spec.dh[1].a, spec.dh[3].d, spec.dh[5].d};
+    g.kind = IkGeometry::kOffsetWrist;
+    g.shoulder_offset = spec.dh[0].a;
+    g.elbow_offset = spec.dh[2].a;
+    for (int i = 0; i < 6; ++i) g.dh[i] = spec.dh[i];
+    return g;
+  }
   throw std::runtime_error("RCI model: the DH table of " + std::string(spec.display_name) +
-                           " is neither a 7-axis S-R-S arm nor a 6-axis arm with a spherical wrist; "
-                           "the closed-form IK supports only those (see docs/kinematics.md)");
+                           " is neither a 7-axis S-R-S arm nor a 6-axis arm with a spherical wrist (with or "
+                           "without shoulder and elbow offsets); the closed-form IK supports only those (see "
+                           "docs/kinematics.md)");
 }
 
 // Throws unless the chain's flange follows the DH table at a spread of configurations.
@@ -122,6 +157,7 @@ ArmModel makeArmModel(const Chain& chain, const RobotSpec& spec) {
   ArmModel arm;
   arm.dof = spec.dof;
   arm.arm_joint_count = spec.dof == 7 ? 4 : 3;
+  arm.family = spec.family;
   for (int i = 0; i < spec.dof; ++i) {
     arm.joints[i] = placementOf(chain.joints[i]);
     arm.chain_links[i] = inertiaOf(chain.links[i]);

@@ -33,7 +33,8 @@ struct JointPlacement {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // parent link -> joint frame at q = 0
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();   // joint origin in the parent link frame
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();         // unit axis in the joint (= child link) frame
-  bool axis_is_z = true;                                   // fast path: axis is exactly +z
+  bool axis_is_z = true;                                   // fast path: axis is exactly +z or -z
+  double z_sign = 1;                                       // with axis_is_z: +1 for +z, -1 for -z
 };
 
 // Mass properties of a rigid body about its link frame's origin (the form RNEA and CRBA use).
@@ -50,19 +51,34 @@ struct Payload {
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();    // about the centre of mass, kg m^2
 };
 
+// Which closed-form IK fits the arm's DH table (docs/kinematics.md).
+enum class IkGeometry {
+  kSrs,          // 7-axis S-R-S (xMate Pro 3/7)
+  kSixAxis,      // 6-axis, shoulder on the J1 axis, no elbow offset, spherical wrist (xMate 3/7)
+  kOffsetWrist,  // 6-axis ortho-parallel arm with shoulder and elbow offsets, spherical wrist (KUKA)
+};
+
 // The lengths the closed-form IK works with, from the model's DH table (docs/kinematics.md).
 //  7-axis S-R-S:             shoulder at (0, 0, base_to_shoulder); upper arm d3, forearm d5, flange d7.
 //  6-axis spherical wrist:   shoulder at (0, 0, base_to_shoulder); upper arm a2, forearm d4, flange d6.
+//  offset wrist (KUKA):      shoulder a1 out from the J1 axis at height d1; upper arm a2; the
+//                            forearm leaves the elbow axis sideways by a3 (signed), then runs d4
+//                            along the A4 axis to the wrist centre; flange d6 beyond it.
 struct ArmGeometry {
   double base_to_shoulder = 0;   // d_bs = d1
   double upper_arm = 0;          // d_se = d3 (7-axis) or a2 (6-axis)
   double forearm = 0;            // d_ew = d5 (7-axis) or d4 (6-axis)
   double wrist_to_flange = 0;    // d_wf = d7 (7-axis) or d6 (6-axis)
+  IkGeometry kind = IkGeometry::kSixAxis;
+  double shoulder_offset = 0;    // offset wrist: a1, from the J1 axis to the J2 axis, m
+  double elbow_offset = 0;       // offset wrist: a3, from the J3 axis to the J4 axis (signed), m
+  std::array<DhRow, 6> dh{};     // offset wrist: the DH rows (angle offsets, axis signs, alphas)
 };
 
 struct ArmModel {
   int dof = 0;                // 6 or 7
   int arm_joint_count = 0;    // joints before the wrist: 4 (7-axis) or 3 (6-axis)
+  RobotFamily family = RobotFamily::kXmate;
   std::array<JointPlacement, kMaxDof> joints;
   std::array<LinkInertia, kMaxDof> chain_links;  // as described by the chain (URDF)
   std::array<LinkInertia, kMaxDof> links;        // chain_links with the payload added to the last link
@@ -77,9 +93,10 @@ struct ArmModel {
   double speed_check_interval = 0.001;  // s; IK codes -4/-5 (0 = off)
 };
 
-// Builds the model of `spec` from its chain (URDF or chainFromDh). Throws std::runtime_error if the
-// chain's joint count differs from the spec's or if its flange pose does not follow the spec's DH
-// table (the closed-form IK relies on that geometry).
+// Builds the model of `spec` (any family) from its chain (URDF or chainFromDh). Throws
+// std::runtime_error if the chain's joint count differs from the spec's or if its flange pose does
+// not follow the spec's DH table (the closed-form IK relies on that geometry). Any thread; allocates,
+// not for the real-time loop.
 ArmModel makeArmModel(const Chain& chain, const RobotSpec& spec);
 
 // Tool centre point relative to the flange. Throws std::invalid_argument unless it is a rigid transform.
@@ -106,10 +123,10 @@ void setSpeedCheckInterval(ArmModel& arm, double seconds);
 LinkInertia inertiaAboutOrigin(double mass, const Eigen::Vector3d& com, const Eigen::Matrix3d& inertia_about_com,
                                const Eigen::Isometry3d& a_T_b = Eigen::Isometry3d::Identity());
 
-// Rotation of joint i's child link relative to its parent link at angle q.
+// Rotation of joint i's child link relative to its parent link at angle q. Real-time safe.
 inline Eigen::Matrix3d jointRotation(const JointPlacement& joint, double q) {
   if (joint.axis_is_z) {
-    const double c = std::cos(q), s = std::sin(q);
+    const double c = std::cos(q), s = joint.z_sign * std::sin(q);
     Eigen::Matrix3d r;
     r.col(0) = c * joint.rotation.col(0) + s * joint.rotation.col(1);
     r.col(1) = c * joint.rotation.col(1) - s * joint.rotation.col(0);

@@ -28,7 +28,7 @@ Chain chainFromDh(const RobotSpec& spec) {
     // Joint 1 sits on the base frame; joint i+1 follows link i by the fixed part of DH row i.
     j.origin = i == 0 ? Eigen::Isometry3d::Identity() : dhFixedPart(spec.dh[i - 1]);
     j.origin.rotate(Eigen::AngleAxisd(spec.dh[i].theta, Eigen::Vector3d::UnitZ()));
-    j.axis = Eigen::Vector3d::UnitZ();
+    j.axis = spec.dh[i].axis_sign * Eigen::Vector3d::UnitZ();
     j.lower = spec.q_min[i];
     j.upper = spec.q_max[i];
     j.velocity = spec.dq_max[i];
@@ -43,7 +43,7 @@ Eigen::Isometry3d dhFlangePose(const RobotSpec& spec, const std::array<double, 7
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   for (int i = 0; i < spec.dof; ++i) {
     const DhRow& r = spec.dh[i];
-    t.rotate(Eigen::AngleAxisd(r.theta + q[i], Eigen::Vector3d::UnitZ()));
+    t.rotate(Eigen::AngleAxisd(r.theta + r.axis_sign * q[i], Eigen::Vector3d::UnitZ()));
     t = t * dhFixedPart(r);
   }
   return t;

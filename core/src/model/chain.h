@@ -44,11 +44,14 @@ struct Chain {
 };
 
 // The chain of a DH table alone: link i's frame sits on joint i's axis (frame i-1 of the DH
-// convention, turned by q_i), so joint i+1's origin is Tz(d_i) Tx(a_i) Rx(alpha_i). No inertias.
-// This is the same frame convention the URDF generator writes.
+// convention, turned by theta_i + axis_sign_i * q_i), so joint i+1's origin is Tz(d_i) Tx(a_i)
+// Rx(alpha_i) Rz(theta_i+1) and its axis is axis_sign_i+1 * z. No inertias.
+// This is the same frame convention the URDF generator writes. Any thread; allocates (names), not
+// for the real-time loop.
 Chain chainFromDh(const RobotSpec& spec);
 
-// The DH convention's flange pose, computed directly from the table (reference for tests).
+// The DH convention's flange pose, computed directly from the table (reference for tests and the
+// chain check of makeArmModel). Any thread; not for the real-time loop (Eigen transforms, no allocation).
 Eigen::Isometry3d dhFlangePose(const RobotSpec& spec, const std::array<double, 7>& q);
 
 }  // namespace xmate::model

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Branch bookkeeping and solution choice shared by the 7-axis and 6-axis closed-form IK.
+// Branch bookkeeping and solution choice shared by the 7-axis, 6-axis and offset-wrist closed-form IK.
 #include "model/ik_branches.h"
 
 #include <algorithm>
@@ -62,6 +62,12 @@ IkStatus speedCheck(const ArmModel& arm, const JointVector& q, const JointVector
 }
 
 }  // namespace
+
+bool placeWithinLimits(const ArmModel& arm, const JointVector& q, const JointVector& q_init, JointVector& placed) {
+  const PlacedSolution s = place(arm, IkCandidate{q, false}, q_init);
+  placed = s.q;
+  return s.first_violation < 0;
+}
 
 ZyzAngles zyzForIk(const Eigen::Matrix3d& r, double a_preferred, bool& singular) {
   ZyzAngles z = zyzAngles(r);

@@ -23,7 +23,7 @@ struct IkCandidates {
 };
 
 // The vector from the shoulder (joint 2's axis on joint 1's axis) to the wrist centre (where the
-// wrist axes meet) for a flange pose, in the base frame: the start of both closed-form IKs.
+// wrist axes meet) for a flange pose, in the base frame: the start of the xMate closed-form IKs.
 Eigen::Vector3d shoulderToWrist(const ArmGeometry& g, const Eigen::Isometry3d& flange);
 
 // Sets joints first .. first + 2 of q to a Z-Y-Z solution of z: branch 0 is (a, b, c), branch 1
@@ -36,6 +36,11 @@ void addWristBranches(IkCandidates& out, JointVector q, int wrist_joint, const Z
 // Z-Y-Z angles of r; when sin(b) < kIkSingularTolerance, sets `singular` and keeps joint a at
 // a_preferred (the split the decomposition cannot determine).
 ZyzAngles zyzForIk(const Eigen::Matrix3d& r, double a_preferred, bool& singular);
+
+// Moves each joint of q by the multiple of 2*pi nearest q_init that keeps it inside the arm's soft
+// limits (where none does, the representative nearest q_init) into placed; true when every joint
+// is inside. Real-time safe.
+bool placeWithinLimits(const ArmModel& arm, const JointVector& q, const JointVector& q_init, JointVector& placed);
 
 // Picks the solution nearest q_init among those within the soft limits (or, if none is, the
 // nearest of all, to report its first limit violation), then applies the singularity and

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "model/ik_branches.h"
+#include "model/ik_offset_wrist.h"
 #include "model/ik_six_axis.h"
 #include "model/ik_srs.h"
 
@@ -12,6 +13,24 @@ namespace xmate::model {
 namespace {
 
 constexpr double kRigidTolerance = 1e-6;
+
+// Input checks, TCP -> flange and the arm's closed-form solver: the raw branch solutions.
+IkStatus candidatesFor(const ArmModel& arm, const Eigen::Matrix4d& tcp_pose, double psi, const JointVector& q_init,
+                       IkCandidates& candidates) {
+  const bool psi_used = arm.geometry.kind == IkGeometry::kSrs;
+  if (!isRigidTransform(tcp_pose) || !q_init.head(arm.dof).allFinite() || (psi_used && !std::isfinite(psi)))
+    return IkStatus::kInvalidPose;
+  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
+  tcp.linear() = tcp_pose.topLeftCorner<3, 3>();
+  tcp.translation() = tcp_pose.topRightCorner<3, 1>();
+  const Eigen::Isometry3d flange = tcp * arm.tool_inverse;
+  switch (arm.geometry.kind) {
+    case IkGeometry::kSrs: return srsCandidates(arm, flange, psi, q_init, candidates);
+    case IkGeometry::kSixAxis: return sixAxisCandidates(arm, flange, q_init, candidates);
+    case IkGeometry::kOffsetWrist: return offsetWristCandidates(arm, flange, q_init, candidates);
+  }
+  return IkStatus::kSingular;
+}
 
 }  // namespace
 
@@ -41,21 +60,29 @@ bool isRigidTransform(const Eigen::Matrix4d& pose) {
 
 IkStatus inverseKinematics(const ArmModel& arm, const Eigen::Matrix4d& tcp_pose, double psi,
                            const JointVector& q_init, JointVector& q_out) {
-  const bool psi_used = arm.dof == 7;
-  if (!isRigidTransform(tcp_pose) || !q_init.head(arm.dof).allFinite() || (psi_used && !std::isfinite(psi)))
-    return IkStatus::kInvalidPose;
-  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
-  tcp.linear() = tcp_pose.topLeftCorner<3, 3>();
-  tcp.translation() = tcp_pose.topRightCorner<3, 1>();
-  const Eigen::Isometry3d flange = tcp * arm.tool_inverse;
-
   IkCandidates candidates;
-  const IkStatus status = psi_used ? srsCandidates(arm, flange, psi, q_init, candidates)
-                                   : sixAxisCandidates(arm, flange, q_init, candidates);
+  const IkStatus status = candidatesFor(arm, tcp_pose, psi, q_init, candidates);
   if (status != IkStatus::kOk) return status;
   return chooseSolution(arm, candidates, q_init, q_out);
 }
 
-double armAngle(const ArmModel& arm, const JointVector& q) { return arm.dof == 7 ? srsArmAngle(arm, q) : 0.0; }
+IkStatus inverseKinematicsBranches(const ArmModel& arm, const Eigen::Matrix4d& tcp_pose, double psi,
+                                   const JointVector& q_init, IkBranchSolutions& out) {
+  out.count = 0;
+  IkCandidates candidates;
+  const IkStatus status = candidatesFor(arm, tcp_pose, psi, q_init, candidates);
+  if (status != IkStatus::kOk) return status;
+  if (candidates.count == 0) return IkStatus::kSingular;
+  for (int k = 0; k < candidates.count; ++k) {
+    IkBranchSolution& s = out.items[out.count++];
+    s.within_limits = placeWithinLimits(arm, candidates.items[k].q, q_init, s.q);
+    s.singular = candidates.items[k].singular;
+  }
+  return IkStatus::kOk;
+}
+
+double armAngle(const ArmModel& arm, const JointVector& q) {
+  return arm.geometry.kind == IkGeometry::kSrs ? srsArmAngle(arm, q) : 0.0;
+}
 
 }  // namespace xmate::model

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Forward kinematics and geometric Jacobian: one pass down the chain with 3x3 rotations and
-// translations (joint rotations about +z take the fast path of jointRotation()).
+// translations (joint rotations about +z or -z take the fast path of jointRotation()).
 #include "model/kinematics.h"
 
 namespace xmate::model {
@@ -64,7 +64,7 @@ Jacobian tcpJacobian(const ArmModel& arm, const JointVector& q) {
   const Eigen::Vector3d p_tcp = tcp.translation();
   Jacobian jac = Jacobian::Zero();
   for (int i = 0; i < arm.dof; ++i) {
-    const Eigen::Vector3d z = arm.joints[i].axis_is_z ? Eigen::Vector3d(points.rotation[i].col(2))
+    const Eigen::Vector3d z = arm.joints[i].axis_is_z ? Eigen::Vector3d(arm.joints[i].z_sign * points.rotation[i].col(2))
                                                        : Eigen::Vector3d(points.rotation[i] * arm.joints[i].axis);
     jac.block<3, 1>(0, i) = z.cross(p_tcp - points.position[i]);
     jac.block<3, 1>(3, i) = z;

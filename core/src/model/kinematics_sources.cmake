@@ -7,6 +7,7 @@ target_sources(rci_core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/ik_branches.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ik_srs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ik_six_axis.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ik_offset_wrist.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inverse_kinematics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/arm_kinematics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/xmate_model.cpp)

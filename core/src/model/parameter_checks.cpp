@@ -62,7 +62,7 @@ std::string checkPerJoint(const char* call, const char* parameter, const RobotSp
 }  // namespace
 
 double ratedPayloadKg(const RobotSpec& spec) {
-  return (spec.type == XMATE3_PRO || spec.type == XMATE3) ? 3.0 : 7.0;
+  return spec.rated_payload_kg;
 }
 
 std::string checkHomogeneous(const char* call, const char* parameter, const std::array<double, 16>& m) {

@@ -13,7 +13,7 @@
 
 namespace xmate::model {
 
-// Rated payload in kg: 3 for the *3 models, 7 for the *7 models (the number in the model name).
+// Rated payload in kg (RobotSpec::rated_payload_kg): the number in the model name (xMate 3/7, KR 6, KR 16).
 double ratedPayloadKg(const RobotSpec& spec);
 
 inline constexpr double kFilterMinHz = 1.0, kFilterMaxHz = 1000.0;

@@ -1,59 +1,76 @@
 // SPDX-License-Identifier: Apache-2.0
-// RobDecoder and SenEncoder (codec.h). decode() runs expat on memory from a fixed arena: expat's
-// memory callbacks take no context, so the arena in use is a thread-local pointer (initial-exec:
-// reading it never allocates), set for the length of one parse.
+// Decoder and Encoder (codec.h): one parser and one writer for both datagrams (<Rob> and <Sen>).
+// decode() copies the datagram into a fixed buffer and parses it in place with pugixml, whose
+// memory comes from a fixed arena: pugixml's memory hooks are process-wide and take no context, so
+// the arena in use is a thread-local pointer (initial-exec: reading it never allocates), set for the
+// length of one parse. Everything else pugixml allocates (nothing else in RCI Studio uses it) goes
+// to malloc as usual.
 #include "rsi/codec.h"
 
-#include <expat.h>
+#include <pugixml.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <mutex>
 
 namespace xmate::rsi {
 
-// A bump allocator for one parse: reset before it, never freed piecemeal. Each block is preceded
-// by its size so that realloc can copy it.
+// A bump allocator for one parse: reset before it, never freed piecemeal.
 struct Arena {
-  static constexpr size_t kBytes = 256 * 1024;
+  static constexpr size_t kBytes = 256 * 1024;  // pugixml's pages are 32 KB: room for an 8 KB datagram
   static constexpr size_t kAlign = 16;
   std::unique_ptr<unsigned char[]> memory{new unsigned char[kBytes]};
   size_t used = 0;
   bool exhausted = false;
+  bool owns(const void* p) const {
+    const auto* b = static_cast<const unsigned char*>(p);
+    return b >= memory.get() && b < memory.get() + kBytes;
+  }
+};
+
+// The decoder's parse state, kept out of the header: the document and the in-place buffer.
+struct Decoder::Parser {
+  pugi::xml_document document;
+  std::array<char, kMaxDatagramBytes + 1> buffer{};
 };
 
 namespace {
 
 thread_local Arena* t_arena __attribute__((tls_model("initial-exec"))) = nullptr;
 
-void* arenaMalloc(size_t size) {
+void* hookAllocate(size_t size) {
   Arena* a = t_arena;
-  const size_t need = Arena::kAlign + (size + Arena::kAlign - 1) / Arena::kAlign * Arena::kAlign;
-  if (!a || a->used + need > Arena::kBytes) {
-    if (a) a->exhausted = true;
-    return nullptr;  // expat reports XML_ERROR_NO_MEMORY
+  if (!a) return std::malloc(size);
+  const size_t need = (size + Arena::kAlign - 1) / Arena::kAlign * Arena::kAlign;
+  if (a->used + need > Arena::kBytes) {
+    a->exhausted = true;
+    return nullptr;  // pugixml reports status_out_of_memory
   }
-  unsigned char* block = a->memory.get() + a->used;
+  void* block = a->memory.get() + a->used;
   a->used += need;
-  std::memcpy(block, &size, sizeof size);
-  return block + Arena::kAlign;
+  return block;
 }
 
-void* arenaRealloc(void* old, size_t size) {
-  void* fresh = arenaMalloc(size);
-  if (fresh && old) {
-    size_t old_size = 0;
-    std::memcpy(&old_size, static_cast<unsigned char*>(old) - Arena::kAlign, sizeof old_size);
-    std::memcpy(fresh, old, std::min(old_size, size));
-  }
-  return fresh;
+void hookDeallocate(void* p) {
+  Arena* a = t_arena;
+  if (a && a->owns(p)) return;  // the whole arena is reset before the next parse
+  std::free(p);
 }
 
-void arenaFree(void*) {}  // the whole arena is reset before the next parse
+void installHooks() {
+  static std::once_flag once;
+  std::call_once(once, [] { pugi::set_memory_management_functions(hookAllocate, hookDeallocate); });
+}
 
-const XML_Memory_Handling_Suite kArenaSuite{arenaMalloc, arenaRealloc, arenaFree};
+// Sets the thread's arena for a scope.
+struct ArenaScope {
+  explicit ArenaScope(Arena* a) { t_arena = a; }
+  ~ArenaScope() { t_arena = nullptr; }
+};
 
 bool equalsAnyCase(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
@@ -114,110 +131,53 @@ std::vector<std::string> builtInAttributes(const Channel& c) {
   return {""};  // EStr: a text element
 }
 
-// ---- RobDecoder -------------------------------------------------------------------------------------
+// ---- Decoder ----------------------------------------------------------------------------------------
 
-struct RobDecoder::Parse {
-  RobDecoder& d;
-  XML_Parser parser;
-  std::vector<double>& values;  // the staged values (committed when the whole datagram parsed)
-  std::vector<bool>& seen;
-  int depth = 0;
-  int text_slot = -1;    // the slot collecting character data, -1 none, -2 IPOC
-  std::array<char, kMaxText> text{};
-  size_t text_length = 0;
-  bool have_ipoc = false;
-
-  void fail(const char* why) {
-    if (*d.reason_ == '\0') d.reason_ = why;
-    XML_StopParser(parser, XML_FALSE);
-  }
-  void store(int slot, std::string_view value) {
-    const Slot& s = d.slots_[size_t(slot)];
-    if (s.type == ValueType::kString)
-      d.texts_[size_t(slot)].assign(value);
-    else if (!parseValue(value, s.type, values[size_t(slot)]))
-      return fail("a value is not a number of the type the Ethernet config gives it");
-    seen[size_t(slot)] = true;
-  }
-};
-
-namespace {
-
-void XMLCALL robStart(void* data, const XML_Char* name, const XML_Char** attributes) {
-  auto& p = *static_cast<RobDecoder::Parse*>(data);
-  const int depth = p.depth++;
-  if (depth == 0) {
-    if (std::strcmp(name, "Rob") != 0) return p.fail("not a <Rob> datagram");
-    for (const XML_Char** a = attributes; *a; a += 2)
-      if (equalsAnyCase(a[0], "type") && !p.d.onType(a[1])) return p.fail("the Type attribute is too long");
-    return;
-  }
-  if (depth > 1) return;  // nothing nests in a <Rob> element
-  p.text_length = 0;
-  p.text_slot = std::strcmp(name, "IPOC") == 0 ? -2 : p.d.slot(name, "");
-  bool known = p.text_slot != -1;
-  for (const XML_Char** a = attributes; *a; a += 2) {
-    const int slot = p.d.slot(name, a[0]);
-    if (slot < 0) {
-      p.d.countUnknown();
-      continue;
-    }
-    known = true;
-    p.store(slot, a[1]);
-  }
-  if (!known) p.d.countUnknown();
-}
-
-void XMLCALL robEnd(void* data, const XML_Char*) {
-  auto& p = *static_cast<RobDecoder::Parse*>(data);
-  if (--p.depth != 1) return;
-  const std::string_view text = trim({p.text.data(), p.text_length});
-  if (p.text_slot == -2) {
-    if (!p.d.onIpoc(text)) return p.fail("<IPOC> is not an unsigned 64-bit number");
-    p.have_ipoc = true;
-  } else if (p.text_slot >= 0) {
-    p.store(p.text_slot, text);
-  }
-  p.text_slot = -1;
-}
-
-void XMLCALL robText(void* data, const XML_Char* s, int length) {
-  auto& p = *static_cast<RobDecoder::Parse*>(data);
-  if (p.text_slot == -1 || p.depth != 2) return;
-  if (p.text_length + size_t(length) >= kMaxText) return p.fail("a value is longer than the codec keeps");
-  std::memcpy(p.text.data() + p.text_length, s, size_t(length));
-  p.text_length += size_t(length);
-}
-
-}  // namespace
-
-RobDecoder::RobDecoder(const EthernetConfig& config)
-    : slots_(slotsOf(config.send)),
+Decoder::Decoder(const EthernetConfig& config, Direction direction)
+    : root_(direction == Direction::kRob ? "Rob" : "Sen"),
+      not_root_reason_(direction == Direction::kRob ? "not a <Rob> datagram" : "not a <Sen> datagram"),
+      slots_(slotsOf(direction == Direction::kRob ? config.send : config.receive)),
       values_(slots_.size(), 0.0),
       staged_(slots_.size(), 0.0),
       texts_(slots_.size()),
       seen_(slots_.size(), false),
       staged_seen_(slots_.size(), false),
-      arena_(std::make_unique<Arena>()) {}
+      arena_(std::make_unique<Arena>()) {
+  installHooks();
+  parser_ = std::make_unique<Parser>();
+  // Each element's slots, for the look-up per datagram.
+  for (size_t i = 0; i < slots_.size(); ++i) {
+    auto e = std::find_if(elements_.begin(), elements_.end(), [&](const ElementSlots& x) { return x.name == slots_[i].element; });
+    if (e == elements_.end()) {
+      elements_.push_back({slots_[i].element, -1, {}});
+      e = elements_.end() - 1;
+    }
+    if (slots_[i].attribute.empty()) e->text_slot = int(i);
+    else e->attributes.emplace_back(slots_[i].attribute, int(i));
+  }
+}
 
-RobDecoder::~RobDecoder() = default;
+Decoder::~Decoder() {
+  ArenaScope scope(arena_.get());  // the document's pages are in the arena
+  parser_.reset();
+}
 
-int RobDecoder::slot(std::string_view element, std::string_view attribute) const {
+int Decoder::slot(std::string_view element, std::string_view attribute) const {
   return findSlot(slots_, element, attribute);
 }
 
-std::string_view RobDecoder::text(int slot) const {
+std::string_view Decoder::text(int slot) const {
   return texts_[size_t(slot)].view();
 }
 
-bool RobDecoder::onType(std::string_view type) {
+bool Decoder::setType(std::string_view type) {
   if (type.size() >= kMaxText) return false;
   std::memcpy(type_.data(), type.data(), type.size());
   type_length_ = type.size();
   return true;
 }
 
-bool RobDecoder::onIpoc(std::string_view text) {
+bool Decoder::stageIpoc(std::string_view text) {
   uint64_t v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (text.empty() || ec != std::errc() || end != text.data() + text.size() || text.size() >= kMaxText) return false;
@@ -227,7 +187,30 @@ bool RobDecoder::onIpoc(std::string_view text) {
   return true;
 }
 
-bool RobDecoder::decode(std::string_view datagram) {
+namespace {
+// An element's text, trimmed (pugixml keeps it in place; with parse_minimal it is not trimmed).
+std::string_view textOf(const pugi::xml_node& element) {
+  for (pugi::xml_node child = element.first_child(); child; child = child.next_sibling())
+    if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) return trim(child.value());
+  return {};
+}
+}  // namespace
+
+const Decoder::ElementSlots* Decoder::element(std::string_view name) const {
+  for (const ElementSlots& e : elements_)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+bool Decoder::store(int slot, std::string_view value) {
+  const Slot& s = slots_[size_t(slot)];
+  if (s.type == ValueType::kString) texts_[size_t(slot)].assign(value);
+  else if (!parseValue(value, s.type, staged_[size_t(slot)])) return false;
+  staged_seen_[size_t(slot)] = true;
+  return true;
+}
+
+bool Decoder::decode(std::string_view datagram) {
   reason_ = "";
   unknown_ = 0;
   if (datagram.size() > kMaxDatagramBytes) {
@@ -236,32 +219,78 @@ bool RobDecoder::decode(std::string_view datagram) {
   }
   std::copy(values_.begin(), values_.end(), staged_.begin());
   staged_seen_ = seen_;  // same size: no allocation
+  std::memcpy(parser_->buffer.data(), datagram.data(), datagram.size());
   arena_->used = 0;
   arena_->exhausted = false;
-  t_arena = arena_.get();
-  XML_Parser parser = XML_ParserCreate_MM(nullptr, &kArenaSuite, nullptr);
-  bool ok = false;
-  if (!parser) {
-    reason_ = "the XML parser could not start";
-  } else {
-    XML_SetHashSalt(parser, 0x52534931);  // fixed: no entropy read (a system call) per datagram
-    Parse parse{*this, parser, staged_, staged_seen_};
-    XML_SetUserData(parser, &parse);
-    XML_SetElementHandler(parser, robStart, robEnd);
-    XML_SetCharacterDataHandler(parser, robText);
-    const bool parsed = XML_Parse(parser, datagram.data(), int(datagram.size()), XML_TRUE) == XML_STATUS_OK;
-    if (!parsed && *reason_ == '\0')
-      reason_ = arena_->exhausted ? "the datagram is too complex to parse in the codec's memory"
-                                  : XML_ErrorString(XML_GetErrorCode(parser));
-    ok = parsed && *reason_ == '\0';
-    if (ok && !parse.have_ipoc) {
-      reason_ = "the datagram has no <IPOC>";
-      ok = false;
-    }
-    XML_ParserFree(parser);
+  ArenaScope scope(arena_.get());
+  const pugi::xml_parse_result parsed = parser_->document.load_buffer_inplace(
+      parser_->buffer.data(), datagram.size(), pugi::parse_minimal | pugi::parse_escapes, pugi::encoding_utf8);
+  if (!parsed) {
+    reason_ = arena_->exhausted ? "the datagram is too complex to parse in the codec's memory" : parsed.description();
+    return false;
   }
-  t_arena = nullptr;
-  if (!ok) return false;
+  const pugi::xml_node root = parser_->document.document_element();
+  if (!root || std::strcmp(root.name(), root_) != 0) {
+    reason_ = not_root_reason_;
+    return false;
+  }
+  for (pugi::xml_attribute a = root.first_attribute(); a; a = a.next_attribute())
+    if (equalsAnyCase(a.name(), "type") && !setType(a.value())) {
+      reason_ = "the Type attribute is too long";
+      return false;
+    }
+  bool have_ipoc = false;
+  for (pugi::xml_node node = root.first_child(); node; node = node.next_sibling()) {
+    if (node.type() != pugi::node_element) continue;
+    if (std::strcmp(node.name(), "IPOC") == 0) {
+      if (!stageIpoc(textOf(node))) {
+        reason_ = "<IPOC> is not an unsigned 64-bit number";
+        return false;
+      }
+      have_ipoc = true;
+      continue;
+    }
+    const ElementSlots* e = element(node.name());
+    if (!e) {
+      ++unknown_;  // the element, and each of its attributes
+      for (pugi::xml_attribute a = node.first_attribute(); a; a = a.next_attribute()) ++unknown_;
+      continue;
+    }
+    if (e->text_slot >= 0) {
+      const std::string_view text = textOf(node);
+      if (text.size() >= kMaxText) {
+        reason_ = "a value is longer than the codec keeps";
+        return false;
+      }
+      if (!store(e->text_slot, text)) {
+        reason_ = "a value is not a number of the type the Ethernet config gives it";
+        return false;
+      }
+    }
+    size_t expected = 0;  // attributes usually come in the config's order: try the next one first
+    for (pugi::xml_attribute a = node.first_attribute(); a; a = a.next_attribute()) {
+      int slot = -1;
+      for (size_t k = 0; k < e->attributes.size() && slot < 0; ++k) {
+        const auto& [name, index] = e->attributes[(expected + k) % e->attributes.size()];
+        if (name == a.name()) {
+          slot = index;
+          expected = (expected + k + 1) % e->attributes.size();
+        }
+      }
+      if (slot < 0) {
+        ++unknown_;
+        continue;
+      }
+      if (!store(slot, a.value())) {
+        reason_ = "a value is not a number of the type the Ethernet config gives it";
+        return false;
+      }
+    }
+  }
+  if (!have_ipoc) {
+    reason_ = "the datagram has no <IPOC>";
+    return false;
+  }
   values_.swap(staged_);
   seen_.swap(staged_seen_);
   ipoc_ = staged_ipoc_;
@@ -270,10 +299,14 @@ bool RobDecoder::decode(std::string_view datagram) {
   return true;
 }
 
-// ---- SenEncoder -------------------------------------------------------------------------------------
+// ---- Encoder ----------------------------------------------------------------------------------------
 
-SenEncoder::SenEncoder(const EthernetConfig& config, int precision)
-    : sentype_(config.sentype), precision_(std::clamp(precision, 0, 9)), slots_(slotsOf(config.receive)) {
+Encoder::Encoder(const EthernetConfig& config, Direction direction, int precision)
+    : root_(direction == Direction::kRob ? "Rob" : "Sen"),
+      max_bytes_(direction == Direction::kRob ? kMaxDatagramBytes : kMaxSenBytes),
+      sentype_(config.sentype),
+      precision_(std::clamp(precision, 0, 9)),
+      slots_(slotsOf(direction == Direction::kRob ? config.send : config.receive)) {
   values_.assign(slots_.size(), 0.0);
   texts_.resize(slots_.size());
   for (size_t i = 0; i < slots_.size(); ++i) {
@@ -286,11 +319,11 @@ SenEncoder::SenEncoder(const EthernetConfig& config, int precision)
   }
 }
 
-int SenEncoder::slot(std::string_view element, std::string_view attribute) const {
+int Encoder::slot(std::string_view element, std::string_view attribute) const {
   return findSlot(slots_, element, attribute);
 }
 
-void SenEncoder::setText(int slot, std::string_view text) { texts_[size_t(slot)].assign(text); }
+void Encoder::setText(int slot, std::string_view text) { texts_[size_t(slot)].assign(text); }
 
 void TextValue::assign(std::string_view text) {
   length = uint8_t(std::min(text.size(), kMaxText - 1));
@@ -298,7 +331,7 @@ void TextValue::assign(std::string_view text) {
 }
 
 // Appends to a fixed buffer; remembers when it ran out.
-struct SenEncoder::Writer {
+struct Encoder::Writer {
   char* out;
   size_t capacity;
   size_t length = 0;
@@ -337,16 +370,18 @@ struct SenEncoder::Writer {
 };
 
 
-void SenEncoder::putValue(Writer& w, int slot) const {
+void Encoder::putValue(Writer& w, int slot) const {
   if (slots_[size_t(slot)].type == ValueType::kString)
     w.putEscaped(texts_[size_t(slot)].view());
   else
     w.putNumber(values_[size_t(slot)], slots_[size_t(slot)].type, precision_);
 }
 
-size_t SenEncoder::encode(std::string_view ipoc_text, char* out, size_t capacity) const {
-  Writer w{out, std::min(capacity, kMaxSenBytes)};
-  w.put("<Sen Type=\"");
+size_t Encoder::encode(std::string_view ipoc_text, char* out, size_t capacity) const {
+  Writer w{out, std::min(capacity, max_bytes_)};
+  w.put("<");
+  w.put(root_);
+  w.put(" Type=\"");
   w.putEscaped(sentype_);
   w.put("\">");
   for (const Group& g : groups_) {
@@ -371,7 +406,9 @@ size_t SenEncoder::encode(std::string_view ipoc_text, char* out, size_t capacity
   }
   w.put("<IPOC>");
   w.put(ipoc_text);
-  w.put("</IPOC></Sen>");
+  w.put("</IPOC></");
+  w.put(root_);
+  w.put(">");
   return w.full ? 0 : w.length;
 }
 

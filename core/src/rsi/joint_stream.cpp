@@ -36,19 +36,34 @@ std::string fmt(const char* format, double a, double b = 0, double c = 0) {
 }  // namespace
 
 AxisCorrectionLimits axisCorrectionLimits(const Context& context) {
+  const Object* corr = nullptr;
+  const Object* monitor = nullptr;
   for (const Object& object : context.objects) {
-    if (object.type != "AXISCORR") continue;
-    AxisCorrectionLimits limits;
-    limits.object = object.id;
-    for (int i = 0; i < 6; ++i) {
-      const std::string axis = "A" + std::to_string(i + 1);
-      limits.lower[size_t(i)] = limitParameter(context, object, "LowerLim" + axis, -kKukaDefaultLimitDeg) / kDeg;
-      limits.upper[size_t(i)] = limitParameter(context, object, "UpperLim" + axis, kKukaDefaultLimitDeg) / kDeg;
-    }
-    return limits;
+    if (!corr && object.type == "AXISCORR") corr = &object;
+    if (!monitor && object.type == "AXISCORRMON") monitor = &object;
   }
-  throw ConfigError(context.path + ": the context has no AXISCORR object, so the PC cannot move the robot by axis "
-                    "corrections; add one in RSI Visual, wired to the ETHERNET object's outputs 1..6");
+  if (!corr)
+    throw ConfigError(context.path + ": the context has no AXISCORR object, so the PC cannot move the robot by axis "
+                      "corrections; add one in RSI Visual, wired to the ETHERNET object's outputs 1..6");
+  AxisCorrectionLimits limits;
+  for (size_t i = 0; i < 6; ++i) {
+    const std::string axis = "A" + std::to_string(i + 1);
+    limits.lower[i] = limitParameter(context, *corr, "LowerLim" + axis, -kKukaDefaultLimitDeg) / kDeg;
+    limits.upper[i] = limitParameter(context, *corr, "UpperLim" + axis, kKukaDefaultLimitDeg) / kDeg;
+    limits.lower_by[i] = corr->id + "'s LowerLim" + axis;
+    limits.upper_by[i] = corr->id + "'s UpperLim" + axis;
+    if (!monitor || !monitor->parameter("Max" + axis)) continue;
+    const double max = std::abs(limitParameter(context, *monitor, "Max" + axis, 0)) / kDeg;
+    if (max < limits.upper[i]) {
+      limits.upper[i] = max;
+      limits.upper_by[i] = monitor->id + "'s Max" + axis;
+    }
+    if (-max > limits.lower[i]) {
+      limits.lower[i] = -max;
+      limits.lower_by[i] = monitor->id + "'s Max" + axis;
+    }
+  }
+  return limits;
 }
 
 JointStream::JointStream(Link& link, const model::RobotSpec& spec, const AxisCorrectionLimits& limits)
@@ -75,8 +90,12 @@ Correction JointStream::onCycle(const RobDecoder& rob) {
     now_.session = session;
     now_.cycles = 0;
     now_.q_on = now_.q_set;
+    now_.ipoc_step = 0;
     correction_ = {};
+  } else {
+    now_.ipoc_step = rob.ipoc() - now_.ipoc;
   }
+  now_.ipoc = rob.ipoc();
   ++now_.cycles;
   if (CycleMotion* motion = motion_.load(std::memory_order_acquire)) {
     std::array<double, 6> q{};
@@ -108,6 +127,12 @@ void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_ro
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   const uint32_t session = s.session;
+  const int cycle_ms = link_.options().cycle_ms;
+  if ((s.ipoc_step == 4 || s.ipoc_step == 12) && s.ipoc_step != uint64_t(cycle_ms))
+    throw std::runtime_error("the robot runs RSI every " + std::to_string(s.ipoc_step) + " ms (its IPOC advances so), " +
+                             "but the motion was planned for " + std::to_string(cycle_ms) +
+                             " ms cycles; set the cycle to " + std::to_string(s.ipoc_step) + " ms (" +
+                             (s.ipoc_step == 4 ? "RSI_ON with #IPO_FAST" : "RSI_ON without #IPO_FAST") + ")");
   motion_done_.store(false, std::memory_order_relaxed);
   motion_.store(&motion, std::memory_order_release);
   for (;;) {
@@ -129,29 +154,26 @@ void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_ro
   }
 }
 
-std::string JointStream::checkSamples(const double* q, size_t count, const std::array<double, 6>& q_on) const {
-  for (size_t k = 0; k < count; ++k) {
-    const double* sample = q + 6 * k;
-    for (int i = 0; i < 6; ++i) {
-      const std::string axis = "A" + std::to_string(i + 1);
-      const double value = sample[i];
-      if (value < spec_.q_min[size_t(i)] - 1e-9 || value > spec_.q_max[size_t(i)] + 1e-9)
-        return axis + " would reach " + fmt("%.2f deg, outside its range %.1f .. %.1f deg", value * kDeg,
-                                             spec_.q_min[size_t(i)] * kDeg, spec_.q_max[size_t(i)] * kDeg);
-      if (k > 0) {
-        const double speed = std::abs(value - q[6 * (k - 1) + size_t(i)]) / cycle_s_;
-        if (speed > spec_.dq_max[size_t(i)] * (1 + 1e-6))
-          return axis + " would move at " + fmt("%.1f deg/s, above its rated %.1f deg/s", speed * kDeg,
-                                                spec_.dq_max[size_t(i)] * kDeg);
-      }
-      const double correction = value - q_on[size_t(i)];
-      if (correction < limits_.lower[size_t(i)] - 1e-9 || correction > limits_.upper[size_t(i)] + 1e-9) {
-        const bool above = correction > 0;
-        return axis + " would need a correction of " + fmt("%.2f deg from where RSI was switched on", correction * kDeg) +
-               ", beyond " + limits_.object + "'s " + (above ? "UpperLim" : "LowerLim") + axis + " = " +
-               fmt("%.1f deg", (above ? limits_.upper[size_t(i)] : limits_.lower[size_t(i)]) * kDeg) +
-               "; raise the limit in the RSI context or teach a target closer to the RSI start pose";
-      }
+std::string JointStream::checkSample(const double* q, const double* previous, double spacing,
+                                     const std::array<double, 6>& q_on) const {
+  for (int i = 0; i < 6; ++i) {
+    const size_t j = size_t(i);
+    const std::string axis = "A" + std::to_string(i + 1);
+    if (q[i] < spec_.q_min[j] - 1e-9 || q[i] > spec_.q_max[j] + 1e-9)
+      return axis + " would reach " +
+             fmt("%.2f deg, outside its range %.1f .. %.1f deg", q[i] * kDeg, spec_.q_min[j] * kDeg, spec_.q_max[j] * kDeg);
+    if (previous) {
+      const double speed = std::abs(q[i] - previous[i]) / spacing;
+      if (speed > spec_.dq_max[j] * (1 + 1e-6))
+        return axis + " would move at " + fmt("%.1f deg/s, above its rated %.1f deg/s", speed * kDeg, spec_.dq_max[j] * kDeg);
+    }
+    const double correction = q[i] - q_on[j];
+    if (correction < limits_.lower[j] - 1e-9 || correction > limits_.upper[j] + 1e-9) {
+      const bool above = correction > 0;
+      return axis + " would need a correction of " + fmt("%.2f deg from where RSI was switched on", correction * kDeg) +
+             ", beyond " + (above ? limits_.upper_by[j] : limits_.lower_by[j]) + " = " +
+             fmt("%.1f deg", (above ? limits_.upper[j] : limits_.lower[j]) * kDeg) +
+             "; raise the limit in the RSI context or teach a target closer to the RSI start pose";
     }
   }
   return {};

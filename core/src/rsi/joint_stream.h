@@ -18,15 +18,17 @@
 
 namespace xmate::rsi {
 
-// The total axis correction AXISCORR lets through, per axis (rad), and the object that sets it.
+// The total axis correction the context lets through, per axis (rad), and what sets each limit
+// ("AXISCORR1's UpperLimA2", "AXISCORRMON1's MaxA2").
 struct AxisCorrectionLimits {
-  std::string object;  // e.g. "AXISCORR1"
   std::array<double, 6> lower{}, upper{};
+  std::array<std::string, 6> lower_by, upper_by;
 };
 
 // The first AXISCORR object's LowerLimA1..A6 / UpperLimA1..A6 (KUKA's default +-5 deg where one is
-// not given). Throws ConfigError naming the file when the context has no AXISCORR object (it then
-// cannot move the robot by axis corrections) or a limit is not a number. Set-up; any thread.
+// not given), tightened by the first AXISCORRMON's MaxA1..A6 where it has one (it stops RSI beyond
+// it). Throws ConfigError naming the file when the context has no AXISCORR object (it then cannot
+// move the robot by axis corrections) or a limit is not a number. Set-up; any thread.
 AxisCorrectionLimits axisCorrectionLimits(const Context& context);
 
 // What the stream knows on a cycle (rad).
@@ -37,6 +39,8 @@ struct StreamState {
   std::array<double, 6> q{};      // actual axes (DEF_AIPos)
   std::array<double, 6> q_set{};  // set-point axes (DEF_ASPos; the actual ones if the config does not send it)
   std::array<double, 6> q_command{};  // the axes the last correction asks for (q_on + correction)
+  uint64_t ipoc = 0;
+  uint64_t ipoc_step = 0;  // IPOC's last advance: a KRC's clock advances by the cycle in ms (4 or 12)
 };
 
 // A motion streamed one command per RSI cycle.
@@ -59,15 +63,20 @@ class JointStream {
 
   // The caller's thread (one at a time): waits (at most `wait_for_robot`) for RSI to run, streams
   // `motion` until its last command, and returns. Throws std::runtime_error when RSI does not run,
-  // or stops or restarts during the motion (the robot then holds where RSI left it).
+  // when the robot's IPOC advances by 4 or 12 ms a cycle and that is not the link's cycle_ms (the
+  // motion would run at the wrong speed), or when RSI stops or restarts during the motion (the robot
+  // then holds where RSI left it).
   void run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot = std::chrono::seconds(5));
 
-  // Refusal text (empty when fine) for joint samples 1 cycle apart: a sample outside the axis range,
-  // an axis faster than its rated speed, or a total correction q - q_on beyond the AXISCORR limits.
-  // Names the axis, the limit and the value, in degrees. Any thread.
-  std::string checkSamples(const double* q, size_t count, const std::array<double, 6>& q_on) const;
+  // Refusal text (empty when fine) for one joint sample (6 values, rad) `spacing` seconds after
+  // `previous` (nullptr for the first): outside the axis range, an axis faster than its rated
+  // speed, or a total correction q - q_on beyond the AXISCORR limits. Names the axis, the limit and
+  // the value, in degrees. Any thread.
+  std::string checkSample(const double* q, const double* previous, double spacing,
+                          const std::array<double, 6>& q_on) const;
 
   double cycleSeconds() const { return cycle_s_; }
+  const model::RobotSpec& spec() const { return spec_; }
   const AxisCorrectionLimits& limits() const { return limits_; }
 
  private:

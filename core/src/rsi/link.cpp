@@ -34,7 +34,7 @@ void Link::setCallback(Callback callback) {
 void Link::start() {
   if (thread_.joinable()) return;
   const std::string ip = !options_.bind_ip.empty() ? options_.bind_ip : config_.ip_is_placeholder ? "0.0.0.0" : config_.ip;
-  const uint16_t port = options_.port != 0 ? options_.port : config_.port;
+  const uint16_t port = options_.port >= 0 ? uint16_t(options_.port) : config_.port;
   try {
     socket_.bind(ip, port);
   } catch (const std::exception& e) {

@@ -37,7 +37,7 @@ struct Correction {
 
 struct LinkOptions {
   std::string bind_ip;   // "": the config's IP_NUMBER, or every address if that is a placeholder
-  uint16_t port = 0;     // 0: the config's PORT
+  int port = -1;         // -1: the config's PORT; 0: a free port (port() tells which)
   int precision = 4;     // decimals of DOUBLE values (the context's ETHERNET Precision)
   CorrectionMode mode = CorrectionMode::kAbsolute;
   int cycle_ms = 4;      // 4 (#IPO_FAST) or 12: an answer later than this after its <Rob> is late

@@ -18,3 +18,7 @@ target_sources(rci_core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/robot_model_dump.cpp
   ${CMAKE_CURRENT_LIST_DIR}/safety.cpp
   ${CMAKE_CURRENT_LIST_DIR}/servo.cpp)
+# The simulated KUKA controller's RSI logic (no I/O): docs/rsi.md, "The simulated KRC".
+target_sources(rci_core PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/krc.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/krc_cycle.cpp)

@@ -12,6 +12,7 @@
 #include <xmate/exception.h>
 
 #include "teach/program_io.h"
+#include "teach/robot_port.h"
 
 namespace xmate::teach {
 namespace {
@@ -26,6 +27,24 @@ double secondsSince(Clock::time_point start) {
 struct ActiveGuard {
   std::atomic<bool>& flag;
   ~ActiveGuard() { flag.store(false); }
+};
+
+// An xMate through the vendor API.
+class RciPort : public RobotPort {
+ public:
+  explicit RciPort(Robot& robot) : robot_(robot), spec_(model::robotSpec(robot.type())) {}
+  const model::RobotSpec& spec() const override { return spec_; }
+  Reading read() override {
+    const RCI::robot::RobotState s = robot_.receiveRobotState();
+    return {s.q, s.toolTobase_pos_m, s.psi_m};
+  }
+  std::array<double, 16> toolFrame() override { return robot_.toolFrame(); }
+  void setDO(int signal, bool value) override { robot_.setDO(RCI::robot::DOSIGNAL(uint8_t(signal)), value); }
+  bool getDI(int signal) override { return robot_.getDI(RCI::robot::DISIGNAL(uint8_t(signal))); }
+
+ private:
+  Robot& robot_;
+  const model::RobotSpec& spec_;
 };
 
 }  // namespace
@@ -86,7 +105,14 @@ bool Executor::waitWhilePaused() {
 RunReport Executor::run(Robot& robot, const Program& program, const ExecutorOptions& options) {
   if (active_.exchange(true)) throw std::logic_error("Executor::run: a program is already running on this executor");
   ActiveGuard guard{active_};
+  RciPort port(robot);
+  port_ = &port;
   robot_ = &robot;
+  stream_ = nullptr;
+  return runProgram(program, options);
+}
+
+RunReport Executor::runProgram(const Program& program, const ExecutorOptions& options) {
   stop_token_ = options.stop_token;
   has_soft_limits_ = options.has_soft_limits;
   soft_lower_ = options.soft_lower;
@@ -103,13 +129,13 @@ RunReport Executor::run(Robot& robot, const Program& program, const ExecutorOpti
   report.instructions.resize(program.instructions.size());
   setState(RunState::kChecking);
   try {
-    requireRobot(program, robot_->type());
+    requireRobot(program, port_->spec());
     TraceOptions trace;
-    const RCI::robot::RobotState state = robot_->receiveRobotState();
+    const RobotPort::Reading state = port_->read();
     trace.q_start = state.q;
-    trace.tool = robot_->toolFrame();
+    trace.tool = port_->toolFrame();
     trace.has_tcp = true;
-    trace.tcp = state.toolTobase_pos_m;
+    trace.tcp = state.tcp;
     trace.has_soft_limits = options.has_soft_limits;
     trace.soft_lower = options.soft_lower;
     trace.soft_upper = options.soft_upper;
@@ -169,14 +195,15 @@ InstructionReport Executor::execute(const Program& program, size_t index) {
       case InstructionType::kMoveJ:
       case InstructionType::kMoveL:
       case InstructionType::kMoveC:
-        runMotion(program, index, r);
+        if (robot_) runMotion(program, index, r);
+        else runRsiMotion(program, index, r);
         break;
       case InstructionType::kWait:
         runWait(in, r);
         r.duration = secondsSince(start);
         break;
       case InstructionType::kSetDo:
-        robot_->setDO(RCI::robot::DOSIGNAL(uint8_t(in.signal)), in.value);
+        port_->setDO(in.signal, in.value);
         r.duration = secondsSince(start);
         break;
       case InstructionType::kWaitDi:
@@ -222,9 +249,8 @@ void Executor::runWait(const Instruction& in, InstructionReport& r) {
 void Executor::runWaitDi(const Program& program, size_t index, InstructionReport& r) {
   const Instruction& in = program.instructions[index];
   const auto start = Clock::now();
-  const auto signal = RCI::robot::DISIGNAL(uint8_t(in.signal));
   for (;;) {
-    if (robot_->getDI(signal) == in.value) return;
+    if (port_->getDI(in.signal) == in.value) return;
     if (stopping()) {
       r.status = InstructionStatus::kStopped;
       r.message = "stopped by the operator";
@@ -244,10 +270,10 @@ void Executor::runWaitDi(const Program& program, size_t index, InstructionReport
 }
 
 void Executor::recordReached(InstructionReport& r) {
-  const RCI::robot::RobotState s = robot_->receiveRobotState();
+  const RobotPort::Reading s = port_->read();
   r.q = s.q;
-  r.pose = s.toolTobase_pos_m;
-  r.psi = s.psi_m;
+  r.pose = s.tcp;
+  r.psi = s.psi;
 }
 
 }  // namespace xmate::teach

@@ -16,10 +16,18 @@
 
 #include <xmate/robot.h>
 
+#include "model/arm_kinematics.h"
 #include "teach/preflight.h"
 #include "teach/program.h"
+#include "teach/time_scaling.h"
+
+namespace xmate::rsi {
+class JointStream;
+}
 
 namespace xmate::teach {
+
+class RobotPort;
 
 // progress() reads these without locks from any thread.
 static_assert(std::atomic<double>::is_always_lock_free && std::atomic<long>::is_always_lock_free);
@@ -102,6 +110,9 @@ class Executor {
   // Runs the program on `robot` to its end (blocking, on the calling thread). Throws nothing for
   // run-time failures (they are in the report); std::logic_error when another run() is active.
   RunReport run(Robot& robot, const Program& program, const ExecutorOptions& options = {});
+  // The same on a KUKA over RSI: motions are streamed as axis corrections through `stream`, whose
+  // link is running (executor_rsi.cpp). The options' soft limits and box apply to the pre-flight.
+  RunReport run(rsi::JointStream& stream, const Program& program, const ExecutorOptions& options = {});
 
   // ---- Thread-safe controls (any thread, any time; no effect when not running) ----------------
   void pause();                       // smooth stop on the path; holds until resume()/stop()
@@ -112,7 +123,9 @@ class Executor {
   Progress progress() const;
 
  private:
-  Robot* robot_ = nullptr;  // during run()
+  RobotPort* port_ = nullptr;             // during run()
+  Robot* robot_ = nullptr;                // during run() on an xMate
+  rsi::JointStream* stream_ = nullptr;    // during run() on a KUKA
   const std::atomic<bool>* stop_token_ = nullptr;  // during run(): ExecutorOptions::stop_token
   bool has_soft_limits_ = false;  // during run(): the options' soft limits, for IK of pose targets
   std::array<double, 7> soft_lower_{}, soft_upper_{};
@@ -131,10 +144,29 @@ class Executor {
     return stop_requested_.load(std::memory_order_relaxed) ||
            (stop_token_ && stop_token_->load(std::memory_order_relaxed));
   }
+  // On the real-time thread, each cycle of a motion: what the time scaling's k should go to (0 to
+  // pause or stop, else the override), setting the state to show.
+  double scalingTarget(const TimeScaling& scaling) {
+    const bool stop_now = stopping();
+    const bool pausing = pause_requested_.load(std::memory_order_relaxed);
+    if (stop_now) setState(RunState::kStopping);
+    else if (pausing) setState(scaling.value() == 0 ? RunState::kPaused : RunState::kPausing);
+    else setState(RunState::kRunning);
+    return stop_now || pausing ? 0.0 : override_.load(std::memory_order_relaxed);
+  }
+  // Stop requested and the ramp has reached zero: the motion ends where it stands.
+  bool stoppedHere(const TimeScaling& scaling) const {
+    return stopping() && scaling.value() == 0 && scaling.settled();
+  }
   // Blocks while paused (between instructions); false when stop() ended the wait.
   bool waitWhilePaused();
+  RunReport runProgram(const Program& program, const ExecutorOptions& options);
   InstructionReport execute(const Program& program, size_t index);
-  void runMotion(const Program& program, size_t index, InstructionReport& report);
+  // The model motions plan with: the program's tool (else the robot's), the soft limits.
+  model::ArmKinematics motionModel(const Program& program, const model::RobotSpec& spec,
+                                   const std::array<double, 16>& robot_tool) const;
+  void runMotion(const Program& program, size_t index, InstructionReport& report);     // xMate (RCI)
+  void runRsiMotion(const Program& program, size_t index, InstructionReport& report);  // KUKA (RSI)
   void runWait(const Instruction& in, InstructionReport& report);
   void runWaitDi(const Program& program, size_t index, InstructionReport& report);
   void recordReached(InstructionReport& report);

@@ -23,6 +23,7 @@
 #include "teach/executor.h"
 #include "teach/preflight.h"
 #include "teach/targets.h"
+#include "teach/plan_scaling.h"
 #include "teach/time_scaling.h"
 
 namespace xmate::teach {
@@ -100,53 +101,6 @@ void startMoveWhenReady(Robot& robot, CM controller, MM motion) {
   }
 }
 
-// The smallest acceleration-to-velocity ratio (1/s) of what a motion of this type is limited by.
-double accelOverVelocity(InstructionType type, const model::RobotSpec& spec) {
-  double ratio = 1e9;
-  if (type == InstructionType::kMoveJ) {
-    for (int i = 0; i < spec.dof; ++i) ratio = std::min(ratio, spec.ddq_max[i] / spec.dq_max[i]);
-    return ratio;
-  }
-  const model::CartesianLimits& c = model::plannerCartesianLimits();
-  return std::min({c.a_trans / c.v_trans, c.a_rot / c.v_rot, c.a_elbow / c.v_elbow});
-}
-
-// How hard a pause or stop may brake: a joint motion at the rated joint accelerations; a Cartesian
-// one at half the controller's Cartesian accelerations, since braking the TCP near a singular pose
-// takes more of the joints than the path's own acceleration did (the plan was checked against the
-// joint limits, the braking is not).
-constexpr double kCartesianBrakingShare = 0.5;
-// The jerk a change of the scaling's rate may add: half the plan's unused share.
-constexpr double kRateChangeJerkShare = 0.5;
-
-// Sets the scaling's limits from the plan's velocity and acceleration at the clock's plan time
-// (central differences over 1 ms of plan time, in the bridge's coordinates and groups).
-template <class PlanAt>
-void limitScalingAtPlan(ScaledClock& clock, const PlanAt& plan_at, const client::StallBridge::Limits& limits,
-                        int dims, double braking_share) {
-  constexpr double h = 1e-3;
-  const double t = clock.plan_time;
-  const client::StallBridge::Vec p = plan_at(t), before = plan_at(std::max(0.0, t - h)), after = plan_at(t + h);
-  std::array<GroupMotion, client::StallBridge::kMaxDims> groups{};
-  int count = 0;
-  for (int g = 0; g < dims; ++g) {
-    double v2 = 0, a2 = 0;
-    bool member = false;
-    for (int i = 0; i < dims; ++i) {
-      if (limits.group[size_t(i)] != g) continue;
-      member = true;
-      const double v = (after[size_t(i)] - before[size_t(i)]) / (2 * h);
-      const double a = (after[size_t(i)] - 2 * p[size_t(i)] + before[size_t(i)]) / (h * h);
-      v2 += v * v;
-      a2 += a * a;
-    }
-    if (!member) continue;
-    groups[size_t(count++)] = {std::sqrt(v2), std::sqrt(a2), braking_share * limits.acceleration[size_t(g)],
-                               kRateChangeJerkShare * limits.jerk_reserve[size_t(g)]};
-  }
-  const ScalingLimits l = planScalingLimits(groups.data(), count, clock.scaling.value());
-  clock.scaling.setLimits(l.rate, l.rate_change);
-}
 
 bool atRest(const RobotState& s, int dof) {
   if (jointError(s, dof) >= kSettleTolerance) return false;
@@ -183,12 +137,10 @@ void endStartedMotion(Robot& robot) {
 
 }  // namespace
 
-void Executor::runMotion(const Program& program, size_t index, InstructionReport& report) {
-  const Instruction& in = program.instructions[index];
-  const model::RobotSpec& spec = model::robotSpec(robot_->type());
-  const int dof = spec.dof;
+model::ArmKinematics Executor::motionModel(const Program& program, const model::RobotSpec& spec,
+                                           const std::array<double, 16>& robot_tool) const {
   model::ArmKinematics model(spec);
-  model.SetCoor(program.has_tool ? program.tool : robot_->toolFrame());  // the TCP its poses are poses of
+  model.SetCoor(program.has_tool ? program.tool : robot_tool);  // the TCP its poses are poses of
   model.SetSpeedCheckInterval(0);
   if (has_soft_limits_) {
     std::array<double, 7> upper{}, lower{};
@@ -198,6 +150,14 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
     }
     model.SetJointLimit(upper, lower);  // IK of pose targets as the pre-flight resolved them
   }
+  return model;
+}
+
+void Executor::runMotion(const Program& program, size_t index, InstructionReport& report) {
+  const Instruction& in = program.instructions[index];
+  const model::RobotSpec& spec = model::robotSpec(robot_->type());
+  const int dof = spec.dof;
+  const model::ArmKinematics model = motionModel(program, spec, robot_->toolFrame());
   const RobotState state = robot_->receiveRobotState();
   // The tool may have been changed since the pre-flight (another client, the pendant).
   if (usesTool(in)) {
@@ -206,26 +166,14 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
   }
 
   const double share = in.speed * kSpeedShare;
-  ScaledClock clock(override_.load(), safeScalingRate(share, accelOverVelocity(in.type, spec)));
+  ScaledClock clock(override_.load(), safeScalingRate(share, accelOverVelocity(in.type == InstructionType::kMoveJ, spec)));
   bool stopped = false;
   double max_joint_error = 0, max_tcp_error = 0;
-  // What k should go to, and the state to show, this cycle.
-  auto targetK = [&]() -> double {
-    const bool stop_now = stopping();
-    const bool pausing = pause_requested_.load(std::memory_order_relaxed);
-    if (stop_now) setState(RunState::kStopping);
-    else if (pausing) setState(clock.scaling.value() == 0 ? RunState::kPaused : RunState::kPausing);
-    else setState(RunState::kRunning);
-    return stop_now || pausing ? 0.0 : override_.load(std::memory_order_relaxed);
-  };
   auto track = [&](const RobotState& s) {
     max_joint_error = std::max(max_joint_error, jointError(s, dof));
     max_tcp_error = std::max(max_tcp_error, tcpError(s));
   };
   // Stop requested and the ramp has reached zero: end the motion where it stands.
-  auto stoppedHere = [&]() {
-    return stopping() && clock.scaling.value() == 0 && clock.scaling.settled();
-  };
 
   if (in.type == InstructionType::kMoveJ) {
     std::array<double, 7> goal{};
@@ -251,8 +199,8 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
       robot_->Control(JointControl([&](RobotState s) -> JointPositions {
         const bool starting = clock.calls == 0;
         track(s);
-        limitScalingAtPlan(clock, planAt, limits, dof, 1.0);
-        const double t = clock.advance(s, targetK());
+        limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, dof, 1.0);
+        const double t = clock.advance(s, scalingTarget(clock.scaling));
         if (starting && clock.calls == 1) {
           q0 = s.q;  // where the motion really starts
           last = q0;
@@ -261,7 +209,7 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
         }
         fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
         JointPositions out;
-        if (stoppedHere() && !bridge.bridging()) {
+        if (stoppedHere(clock.scaling) && !bridge.bridging()) {
           stopped = true;
           out.q = last;
           out.motion_finished = true;
@@ -311,12 +259,12 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
       robot_->Control(CartesianControl([&](RobotState s) -> CartesianPose {
         track(s);
         const bool starting = clock.calls == 0;
-        limitScalingAtPlan(clock, planAt, limits, 7, kCartesianBrakingShare);
-        const double t = clock.advance(s, targetK());
+        limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, 7, kCartesianBrakingShare);
+        const double t = clock.advance(s, scalingTarget(clock.scaling));
         if (starting && clock.calls == 1)
           bridge.startAt(s.message_id, client::cartesianCoordinates(s.toolTobase_pos_c, s.psi_c, reference));
         fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
-        if (stoppedHere() && !bridge.bridging()) {
+        if (stoppedHere(clock.scaling) && !bridge.bridging()) {
           stopped = true;
           return MotionFinished(last);
         }

@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: Apache-2.0
+// The executor on a KUKA over RSI (executor.h): every motion becomes joints every 1 ms of plan time
+// -- MOVEJ from planning::JointLine, MOVEL/MOVEC through IK of the timed Cartesian path -- checked
+// at the RSI cycle against the axis ranges, speeds and the context's AXISCORR limits before it
+// starts, then streamed one command per RSI cycle by rsi::JointStream. The plan time advances by
+// k * cycle as on the xMate, so pause, stop and the override act the same way. The per-cycle code
+// runs on the link's real-time thread: atomics, locals and the precomputed joints only.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+#include <xmate/exception.h>
+
+#include "client/move_check.h"
+#include "planning/joint_line.h"
+#include "rsi/joint_stream.h"
+#include "teach/executor.h"
+#include "teach/plan_scaling.h"
+#include "teach/robot_port.h"
+#include "teach/targets.h"
+
+namespace xmate::teach {
+namespace {
+
+constexpr double kGridDt = 1e-3;  // plan time between two precomputed joint samples
+constexpr double kSettleTolerance = 5e-5;  // rad, as on the xMate (executor_motion.cpp)
+constexpr int kSettleLimitMs = 1000;
+
+// A KUKA through its RSI stream. Its TCP is the model's at the commanded joints with the program's
+// tool (RSI does not tell the PC which tool the controller has active); it has no digital IO yet.
+class RsiPort : public RobotPort {
+ public:
+  RsiPort(rsi::JointStream& stream, const std::array<double, 16>& tool) : stream_(stream), model_(stream.spec()) {
+    model_.SetCoor(tool);
+    tool_ = tool;
+  }
+  const model::RobotSpec& spec() const override { return stream_.spec(); }
+  Reading read() override {
+    rsi::StreamState s;
+    if (!stream_.state(s))
+      throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived; start the KRL program (RSI_ON, "
+                               "RSI_MOVECORR) on the robot");
+    Reading r;
+    for (size_t i = 0; i < 6; ++i) r.q[i] = s.q[i];
+    r.tcp = model_.GetCartPose(r.q);
+    return r;
+  }
+  std::array<double, 16> toolFrame() override { return tool_; }
+  void setDO(int, bool) override { throw std::runtime_error(kNoIo); }
+  bool getDI(int) override { throw std::runtime_error(kNoIo); }
+
+ private:
+  static constexpr const char* kNoIo =
+      "digital IO over RSI is not supported yet: remove SET_DO and WAIT_DI from programs for a KUKA";
+  rsi::JointStream& stream_;
+  model::ArmKinematics model_;
+  std::array<double, 16> tool_{};
+};
+
+// The joints (rad) between two precomputed samples, linearly.
+client::StallBridge::Vec gridAt(const client::JointSamples& grid, double t) {
+  const double x = std::clamp(t / kGridDt, 0.0, double(grid.size() - 1));
+  const size_t i = std::min(size_t(x), grid.size() - 1);
+  const size_t j = std::min(i + 1, grid.size() - 1);
+  const double f = x - double(i);
+  client::StallBridge::Vec q{};
+  for (size_t d = 0; d < 7; ++d) q[d] = grid[i][d] + f * (grid[j][d] - grid[i][d]);
+  return q;
+}
+
+// Calls a lambda each cycle (rsi::CycleMotion for the link's thread).
+template <class F>
+class LambdaMotion : public rsi::CycleMotion {
+ public:
+  explicit LambdaMotion(F& f) : f_(f) {}
+  bool command(const rsi::StreamState& s, std::array<double, 6>& q) override { return f_(s, q); }
+
+ private:
+  F& f_;
+};
+
+double maxDifference(const std::array<double, 6>& a, const std::array<double, 6>& b) {
+  double m = 0;
+  for (size_t i = 0; i < 6; ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+// How far apart the TCP is at two sets of axes (m). Real-time safe.
+double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6>& a, const std::array<double, 6>& b) {
+  std::array<double, 7> qa{}, qb{};
+  std::copy(a.begin(), a.end(), qa.begin());
+  std::copy(b.begin(), b.end(), qb.begin());
+  const std::array<double, 16> pa = model.GetCartPose(qa), pb = model.GetCartPose(qb);
+  return std::hypot(pa[3] - pb[3], pa[7] - pb[7], pa[11] - pb[11]);
+}
+
+}  // namespace
+
+RunReport Executor::run(rsi::JointStream& stream, const Program& program, const ExecutorOptions& options) {
+  if (active_.exchange(true)) throw std::logic_error("Executor::run: a program is already running on this executor");
+  struct Guard {
+    std::atomic<bool>& flag;
+    ~Guard() { flag.store(false); }
+  } guard{active_};
+  RsiPort port(stream, program.has_tool ? program.tool : kIdentityPose);
+  port_ = &port;
+  robot_ = nullptr;
+  stream_ = &stream;
+  return runProgram(program, options);
+}
+
+void Executor::runRsiMotion(const Program& program, size_t index, InstructionReport& report) {
+  const Instruction& in = program.instructions[index];
+  rsi::JointStream& stream = *stream_;
+  const model::RobotSpec& spec = stream.spec();
+  const model::ArmKinematics model = motionModel(program, spec, port_->toolFrame());
+  rsi::StreamState state;
+  if (!stream.state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
+  std::array<double, 7> q_now{};
+  for (size_t i = 0; i < 6; ++i) q_now[i] = state.q_command[i];  // where the robot is being held
+
+  // The whole motion as joints every 1 ms of plan time.
+  const double share = in.speed * kSpeedShare;
+  client::JointSamples grid;
+  if (in.type == InstructionType::kMoveJ) {
+    std::array<double, 7> goal{};
+    const int rc = jointGoal(in.target, model, q_now, goal);
+    if (rc != XmateModel::kIkOk)
+      throw MotionException(std::string("the target pose cannot be reached: ") + client::ikFailureText(rc) +
+                            " (IK code " + std::to_string(rc) + ")");
+    const planning::JointLine line = planning::planJointLine(spec, q_now, goal, share);
+    const int steps = int(std::ceil(line.profile.duration / kGridDt - 1e-9));
+    grid.resize(size_t(steps) + 1);
+    for (int k = 0; k <= steps; ++k) planning::sampleJointLine(line, k * kGridDt, grid[size_t(k)]);
+  } else {
+    const planning::CartesianPath path = cartesianPath(in, model, q_now);
+    client::planWithinJointLimits(typeName(in.type), path, share, model, q_now, &grid);
+  }
+  if (grid.empty()) grid.push_back(q_now);
+
+  // Checked at the RSI cycle before anything moves.
+  const double dt = stream.cycleSeconds();
+  const size_t stride = std::max<size_t>(1, size_t(std::lround(dt / kGridDt)));
+  const std::array<double, 7>* previous = nullptr;
+  for (size_t k = 0;; k = std::min(k + stride, grid.size() - 1)) {
+    const std::string problem = stream.checkSample(grid[k].data(), previous ? previous->data() : nullptr,
+                                                   previous ? dt : 1.0, state.q_on);
+    if (!problem.empty()) {
+      char at[64];
+      std::snprintf(at, sizeof at, " (at t = %.3f s of the motion)", double(k) * kGridDt);
+      throw MotionException(problem + at);
+    }
+    previous = &grid[k];
+    if (k == grid.size() - 1) break;
+  }
+
+  const double total = double(grid.size() - 1) * kGridDt;
+  TimeScaling scaling(override_.load(), safeScalingRate(share, accelOverVelocity(in.type == InstructionType::kMoveJ, spec)));
+  const client::StallBridge::Limits limits = client::jointBridgeLimits(spec, share);
+  const double braking = in.type == InstructionType::kMoveJ ? 1.0 : kCartesianBrakingShare;
+  auto planAt = [&](double t) { return gridAt(grid, t); };
+  double plan_time = 0, max_joint_error = 0, max_tcp_error = 0;
+  uint64_t cycles = 0;
+  bool stopped = false;
+  std::array<double, 6> last{};
+  for (size_t i = 0; i < 6; ++i) last[i] = grid.front()[i];
+  auto cycle = [&](const rsi::StreamState& s, std::array<double, 6>& q) -> bool {
+    ++cycles;
+    max_joint_error = std::max(max_joint_error, maxDifference(s.q_command, s.q));
+    max_tcp_error = std::max(max_tcp_error, tcpDistance(model, s.q_command, s.q));
+    limitScalingAtPlan(scaling, plan_time, planAt, limits, 6, braking);
+    scaling.setTarget(scalingTarget(scaling));
+    scaling.step(dt);
+    plan_time = std::min(total, plan_time + scaling.value() * dt);
+    fraction_.store(total > 0 ? plan_time / total : 1.0, std::memory_order_relaxed);
+    if (stoppedHere(scaling)) {
+      stopped = true;
+      q = last;
+      return true;
+    }
+    const client::StallBridge::Vec p = planAt(plan_time);
+    for (size_t i = 0; i < 6; ++i) q[i] = last[i] = p[i];
+    return plan_time >= total;
+  };
+  LambdaMotion<decltype(cycle)> motion(cycle);
+  if (total > 0) stream.run(motion);
+
+  report.duration = double(cycles) * dt;
+  report.max_joint_error = max_joint_error;
+  report.max_tcp_error = max_tcp_error;
+  if (stopped) {
+    report.status = InstructionStatus::kStopped;
+    report.message = "stopped by the operator";
+  }
+  // Settled: the actual axes have caught up with the last command.
+  const auto start = std::chrono::steady_clock::now();
+  stream.state(state);
+  const uint64_t first_cycle = state.cycles;
+  for (;;) {
+    stream.state(state);
+    if (maxDifference(state.q_command, state.q) < kSettleTolerance) break;
+    if (std::chrono::steady_clock::now() - start > std::chrono::milliseconds(kSettleLimitMs)) {
+      report.settled = false;
+      report.settle_error = maxDifference(state.q_command, state.q);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  report.settle_time = double(state.cycles > first_cycle ? state.cycles - first_cycle : 0) * dt;
+}
+
+}  // namespace xmate::teach

@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: Apache-2.0
+// The executor on a KUKA over RSI, end to end: rsi::Link + rsi::JointStream against the simulated
+// KRC (sim::KrcServer on its timed thread) on loopback. A program of MOVEJ, MOVEL and MOVEC on the
+// KR 6 R900 sixx reaches its targets; a motion beyond the context's correction limits is refused
+// before it moves, naming the axis, the limit and the value; RSI going off in the middle of a motion
+// fails the instruction saying so; stop() brakes and ends the run.
+#include <QtTest>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <thread>
+
+#include "model/arm_kinematics.h"
+#include "model/robot_spec.h"
+#include "rsi/joint_stream.h"
+#include "rsi/link.h"
+#include "sim/krc_server.h"
+#include "teach/executor.h"
+#include "teach/recording.h"
+
+using namespace xmate;
+using namespace xmate::teach;
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+std::string dataPath(const std::string& relative) {
+  return qEnvironmentVariable("RCI_DATA_DIR").toStdString() + "/" + relative;
+}
+
+const model::RobotSpec& kr6() { return *model::findRobotSpec("kr6_r900_sixx"); }
+
+// The PC side and a simulated KRC running `context` on loopback.
+struct Cell {
+  rsi::EthernetConfig config;
+  std::unique_ptr<rsi::Link> link;
+  std::unique_ptr<rsi::JointStream> stream;
+  std::unique_ptr<sim::KrcServer> krc;
+
+  explicit Cell(const std::string& context) {
+    const rsi::Context c = rsi::readContext(dataPath(context));
+    config = rsi::readEthernetConfig(c.ethernetConfigPath());
+    rsi::LinkOptions options;
+    options.bind_ip = "127.0.0.1";
+    options.port = 0;  // a free port
+    options.realtime = false;
+    options.silence_ms = 200;
+    link = std::make_unique<rsi::Link>(config, options);
+    stream = std::make_unique<rsi::JointStream>(*link, kr6(), rsi::axisCorrectionLimits(c));
+    link->start();
+    sim::KrcServerConfig k;
+    k.krc.context_path = dataPath(context);
+    k.krc.model = "kr6_r900_sixx";
+    k.target_ip = "127.0.0.1";
+    k.target_port = link->port();
+    krc = std::make_unique<sim::KrcServer>(k);
+    krc->start();
+    // As rci-cli run does: the program starts once RSI runs.
+    rsi::StreamState s;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!stream->state(s) && std::chrono::steady_clock::now() < end)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ~Cell() {
+    krc->stop();
+    link->stop();
+  }
+  // The joints the KRC's arm has (rad).
+  std::array<double, 7> actual() const {
+    const sim::KrcStatus s = krc->krc().status();
+    std::array<double, 7> q{};
+    for (size_t i = 0; i < 6; ++i) q[i] = s.q_deg[i] * kDeg;
+    return q;
+  }
+  std::array<double, 7> start() const {
+    const sim::KrcStatus s = krc->krc().status();
+    std::array<double, 7> q{};
+    for (size_t i = 0; i < 6; ++i) q[i] = s.start_deg[i] * kDeg;
+    return q;
+  }
+};
+
+Target jointsTarget(const std::array<double, 7>& q) {
+  Target t;
+  t.has_q = true;
+  t.q = q;
+  return t;
+}
+
+Target poseTarget(const std::array<double, 7>& q) {
+  Target t;
+  t.has_pose = true;
+  t.pose = model::ArmKinematics(kr6()).GetCartPose(q);
+  return t;
+}
+
+std::array<double, 7> offset(const std::array<double, 7>& q, const std::array<double, 6>& deg) {
+  std::array<double, 7> out = q;
+  for (size_t i = 0; i < 6; ++i) out[i] += deg[i] * kDeg;
+  return out;
+}
+
+// Waits until the running instruction is `fraction` done (at most 20 s).
+void waitForFraction(const Executor& executor, double fraction) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (executor.progress().fraction < fraction && std::chrono::steady_clock::now() < end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+}
+
+double maxDifference(const std::array<double, 7>& a, const std::array<double, 7>& b) {
+  double m = 0;
+  for (size_t i = 0; i < 6; ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+Program kukaProgram() {
+  Program p;
+  p.robot = &kr6();
+  return p;
+}
+
+}  // namespace
+
+class TestExecutorRsi : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void programReachesItsTargets();
+  void beyondTheCorrectionLimitIsRefusedBeforeMoving();
+  void rsiGoingOffFailsTheMotion();
+  void stopBrakesAndEndsTheRun();
+};
+
+void TestExecutorRsi::programReachesItsTargets() {
+  Cell cell("resources/rsi/rci_replay.rsi.xml");
+  const std::array<double, 7> home = cell.start();
+  const std::array<double, 7> j1 = offset(home, {20, 10, -15, 30, -20, 45});
+  const std::array<double, 7> l2 = offset(home, {25, 15, -25, 30, -10, 45});
+  const std::array<double, 7> via = offset(home, {15, 20, -30, 30, -10, 45});
+  const std::array<double, 7> c3 = offset(home, {5, 15, -25, 30, -10, 45});
+  Program p = kukaProgram();
+  p.instructions.push_back(moveJ(jointsTarget(j1), 0.5, "J1"));
+  p.instructions.push_back(moveL(poseTarget(l2), 0.5, "L2"));
+  p.instructions.push_back(moveC(poseTarget(via), poseTarget(c3), 0.5, "C3"));
+  p.instructions.push_back(moveJ(jointsTarget(home), 1.0, "home"));
+
+  Executor executor;
+  const RunReport report = executor.run(*cell.stream, p, {});
+  QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  const std::array<std::array<double, 7>, 4> expected{j1, l2, c3, home};
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const InstructionReport& r = report.instructions[i];
+    QCOMPARE(r.status, InstructionStatus::kDone);
+    QVERIFY2(maxDifference(r.q, expected[i]) < 1e-4, qPrintable(QString("instruction %1").arg(i + 1)));
+    QVERIFY(r.settled);
+    QVERIFY(r.duration > 0);
+  }
+  QVERIFY(maxDifference(cell.actual(), home) < 1e-4);
+  const sim::KrcStatus s = cell.krc->krc().status();
+  QCOMPARE(s.last_stop, sim::KrcStop::kNone);  // no clamp, monitor or timeout stopped RSI
+  QCOMPARE(s.session, 1u);
+}
+
+void TestExecutorRsi::beyondTheCorrectionLimitIsRefusedBeforeMoving() {
+  Cell cell("resources/rsi/rci_axis_corr.rsi.xml");  // +-5 deg
+  const std::array<double, 7> home = cell.start();
+  Program p = kukaProgram();
+  p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 0, 0})), 0.5, "near"));
+  p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 12, 0})), 0.5, "far"));
+  Executor executor;
+  const RunReport report = executor.run(*cell.stream, p, {});
+  QCOMPARE(report.outcome, RunState::kFailed);
+  QCOMPARE(report.failed_instruction, 1L);
+  const QString message = QString::fromStdString(report.message);
+  QVERIFY2(message.startsWith("instruction 2 (MOVEJ \"far\"): A5 would need a correction of") &&
+               message.contains("beyond AXISCORR1's UpperLimA5 = 5.0 deg"),
+           qPrintable(message));
+  // It stayed where "near" left it.
+  QVERIFY(maxDifference(cell.actual(), offset(home, {3, 0, 0, 0, 0, 0})) < 1e-4);
+}
+
+void TestExecutorRsi::rsiGoingOffFailsTheMotion() {
+  Cell cell("resources/rsi/rci_replay.rsi.xml");
+  const std::array<double, 7> home = cell.start();
+  Program p = kukaProgram();
+  p.instructions.push_back(moveJ(jointsTarget(offset(home, {80, 0, 0, 0, 0, 0})), 0.1, "slow"));
+  Executor executor;
+  std::thread operator_thread([&] {
+    waitForFraction(executor, 0.2);
+    cell.krc->krc().suspendSending(3000);  // RSI off without a timeout, e.g. the KRL program ended
+  });
+  const RunReport report = executor.run(*cell.stream, p, {});
+  operator_thread.join();
+  QCOMPARE(report.outcome, RunState::kFailed);
+  QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 1 (MOVEJ \"slow\"): RSI stopped during the motion"),
+           report.message.c_str());
+}
+
+void TestExecutorRsi::stopBrakesAndEndsTheRun() {
+  Cell cell("resources/rsi/rci_replay.rsi.xml");
+  const std::array<double, 7> home = cell.start();
+  const std::array<double, 7> far = offset(home, {80, 0, 0, 0, 0, 0});
+  Program p = kukaProgram();
+  p.instructions.push_back(moveJ(jointsTarget(far), 0.3, "far"));
+  p.instructions.push_back(moveJ(jointsTarget(home), 0.3, "back"));
+  Executor executor;
+  std::thread operator_thread([&] {
+    waitForFraction(executor, 0.3);
+    executor.stop();
+  });
+  const RunReport report = executor.run(*cell.stream, p, {});
+  operator_thread.join();
+  QVERIFY2(report.outcome == RunState::kStopped, report.message.c_str());
+  QCOMPARE(report.instructions[0].status, InstructionStatus::kStopped);
+  QCOMPARE(report.instructions[1].status, InstructionStatus::kNotRun);
+  // Stopped on the way: past where stop() was asked, short of the target, and at rest there.
+  const double a1 = cell.actual()[0] - home[0];
+  QVERIFY2(a1 > 0.3 * 80 * kDeg && a1 < 80 * kDeg - 1e-3, qPrintable(QString::number(a1 / kDeg)));
+  QVERIFY(report.instructions[0].settled);
+}
+
+QTEST_GUILESS_MAIN(TestExecutorRsi)
+#include "test_executor_rsi.moc"
