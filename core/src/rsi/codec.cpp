@@ -79,15 +79,18 @@ bool equalsAnyCase(std::string_view a, std::string_view b) {
   return true;
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+// XML's white space (the C locale's isspace also takes \v and \f; XML has none of those).
+inline bool isXmlSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() && isXmlSpace(s.front())) s.remove_prefix(1);
+  while (!s.empty() && isXmlSpace(s.back())) s.remove_suffix(1);
   return s;
 }
 
 // A value of the config's type from datagram text: numbers in any of the C locale's forms
 // (10.000000, -0.0, 1e-05, +3), BOOL as 0/1/TRUE/FALSE. False if it is none of those.
-bool parseValue(std::string_view text, ValueType type, double& out) {
+inline bool parseValue(std::string_view text, ValueType type, double& out) {
   text = trim(text);
   if (type == ValueType::kBool) {
     if (equalsAnyCase(text, "true")) return out = 1, true;
@@ -196,9 +199,9 @@ std::string_view textOf(const pugi::xml_node& element) {
 }
 }  // namespace
 
-const Decoder::ElementSlots* Decoder::element(std::string_view name) const {
+const Decoder::ElementSlots* Decoder::element(const char* name) const {
   for (const ElementSlots& e : elements_)
-    if (e.name == name) return &e;
+    if (std::strcmp(e.name.c_str(), name) == 0) return &e;
   return nullptr;
 }
 
@@ -272,7 +275,7 @@ bool Decoder::decode(std::string_view datagram) {
       int slot = -1;
       for (size_t k = 0; k < e->attributes.size() && slot < 0; ++k) {
         const auto& [name, index] = e->attributes[(expected + k) % e->attributes.size()];
-        if (name == a.name()) {
+        if (std::strcmp(name.c_str(), a.name()) == 0) {
           slot = index;
           expected = (expected + k + 1) % e->attributes.size();
         }

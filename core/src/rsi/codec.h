@@ -86,7 +86,7 @@ class Decoder {
     int text_slot = -1;
     std::vector<std::pair<std::string, int>> attributes;  // in config order
   };
-  const ElementSlots* element(std::string_view name) const;
+  const ElementSlots* element(const char* name) const;
   bool store(int slot, std::string_view value);  // into the staged values; false: not a number
   bool setType(std::string_view type);           // the root's Type attribute; false: too long
   bool stageIpoc(std::string_view text);         // false: not an unsigned 64-bit number
