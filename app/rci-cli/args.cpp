@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "model/robot_spec.h"
+#include "net/host_port.h"
 #include "net/udp_socket.h"
 
 namespace rci_cli {
@@ -56,19 +57,15 @@ CLI::Validator wholeNumber(long lo, long hi) {
 
 // "HOST" or "HOST:PORT" (default_port when left out); UsageError ending in `expected` otherwise.
 HostPort parseHostPort(const std::string& text, uint16_t default_port, const std::string& expected) {
-  HostPort address;
-  address.port = default_port;
-  const auto colon = text.rfind(':');
-  address.host = text.substr(0, colon);
-  if (address.host.empty()) throw UsageError("'" + text + "': no host; " + expected);
-  if (colon != std::string::npos) {
-    const std::string port = text.substr(colon + 1);
-    if (!wholeNumberProblem(port, 1, 65535).empty())
-      throw UsageError("'" + text + "': the port must be a whole number from 1 to 65535, got '" + port + "'; " +
-                       expected);
-    address.port = uint16_t(std::stol(port));
+  xmate::net::HostPort split;
+  switch (xmate::net::splitHostPort(text, default_port, split)) {
+    case xmate::net::HostPortProblem::kNone: return {split.host, split.port};
+    case xmate::net::HostPortProblem::kNoHost:
+    case xmate::net::HostPortProblem::kNoPort: throw UsageError("'" + text + "': no host; " + expected);
+    case xmate::net::HostPortProblem::kBadPort: break;
   }
-  return address;
+  throw UsageError("'" + text + "': the port must be a whole number from 1 to 65535, got '" + split.port_text + "'; " +
+                   expected);
 }
 
 RobotTarget parseRobotTarget(const std::string& text, bool sim_allowed, bool rsi_allowed) {

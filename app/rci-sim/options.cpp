@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "net/host_port.h"
 #include "net/udp_socket.h"
 
 namespace rcisim {
@@ -228,20 +229,16 @@ std::string usageText() {
 }
 
 void parseHostPort(const std::string& option, const std::string& text, std::string& host, uint16_t& port) {
-  const size_t colon = text.rfind(':');
-  long p = 0;
-  const char* begin = colon == std::string::npos ? nullptr : text.data() + colon + 1;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = begin ? std::from_chars(begin, end, p) : std::from_chars_result{nullptr, std::errc::invalid_argument};
-  if (colon == std::string::npos || ec != std::errc() || ptr != end || p < 1 || p > 65535)
+  xmate::net::HostPort address;
+  if (xmate::net::splitHostPort(text, 0, address) != xmate::net::HostPortProblem::kNone)
     throw UsageError(option + " takes HOST:PORT with a port from 1 to 65535, e.g. 127.0.0.1:49152, got '" + text + "'");
-  host = text.substr(0, colon);
   try {
-    xmate::net::makeEndpoint(host, uint16_t(p));
+    xmate::net::makeEndpoint(address.host, address.port);
   } catch (const std::invalid_argument&) {
-    throw UsageError(option + " takes an IPv4 address such as 127.0.0.1 before the port, got '" + host + "'");
+    throw UsageError(option + " takes an IPv4 address such as 127.0.0.1 before the port, got '" + address.host + "'");
   }
-  port = uint16_t(p);
+  host = address.host;
+  port = address.port;
 }
 
 bool isLoopbackAddress(const std::string& ip) { return ip == "localhost" || ip.rfind("127.", 0) == 0; }

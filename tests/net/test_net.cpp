@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include "net/cycle_stats.h"
+#include "net/host_port.h"
 #include "net/realtime.h"
 #include "net/seqlock.h"
 #include "net/spsc_ring.h"
@@ -159,6 +160,25 @@ class TestNet : public QObject {
     } catch (const std::runtime_error& e) {
       QVERIFY2(QString(e.what()).contains(QString::number(port)), e.what());
     }
+  }
+
+  // HOST:PORT as every program here reads it: the port after the last colon, or the default.
+  void hostPortIsSplitAtTheLastColon() {
+    HostPort a;
+    QCOMPARE(splitHostPort("192.168.0.160:1337", 0, a), HostPortProblem::kNone);
+    QCOMPARE(a.host, std::string("192.168.0.160"));
+    QCOMPARE(a.port, uint16_t(1337));
+    QCOMPARE(splitHostPort("sensor", 49152, a), HostPortProblem::kNone);
+    QCOMPARE(a.port, uint16_t(49152));
+    QCOMPARE(splitHostPort("sensor", 0, a), HostPortProblem::kNoPort);
+    QCOMPARE(splitHostPort(":1337", 0, a), HostPortProblem::kNoHost);
+    QCOMPARE(splitHostPort("", 1337, a), HostPortProblem::kNoHost);
+    QCOMPARE(splitHostPort("host:", 1337, a), HostPortProblem::kBadPort);
+    QCOMPARE(a.port_text, std::string());
+    QCOMPARE(splitHostPort("host:70000", 0, a), HostPortProblem::kBadPort);
+    QCOMPARE(a.port_text, std::string("70000"));
+    QCOMPARE(splitHostPort("host:12ab", 0, a), HostPortProblem::kBadPort);
+    QCOMPARE(splitHostPort("host:0", 0, a), HostPortProblem::kBadPort);
   }
 };
 

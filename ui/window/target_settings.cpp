@@ -7,6 +7,8 @@
 
 #include <xmate/ini.h>
 
+#include "net/host_port.h"
+
 namespace rci::ui {
 namespace {
 
@@ -18,26 +20,26 @@ QSettings settings() { return QSettings(QStringLiteral("RCI Studio"), QStringLit
 
 bool parseHostPort(const QString& text, QString& host, quint16& port, QString& error) {
   const QString trimmed = text.trimmed();
-  const int colon = trimmed.lastIndexOf(QLatin1Char(':'));
-  if (trimmed.isEmpty() || colon <= 0 || colon == trimmed.size() - 1) {
+  xmate::net::HostPort split;
+  const xmate::net::HostPortProblem problem = xmate::net::splitHostPort(trimmed.toStdString(), 0, split);
+  if (problem == xmate::net::HostPortProblem::kNoHost || problem == xmate::net::HostPortProblem::kNoPort ||
+      (problem == xmate::net::HostPortProblem::kBadPort && split.port_text.empty())) {
     error = QStringLiteral("\"%1\" is not a robot address. Enter it as HOST:PORT, e.g. 192.168.0.160:1337.")
                 .arg(trimmed);
     return false;
   }
-  bool ok = false;
-  const uint value = trimmed.mid(colon + 1).toUInt(&ok);
-  if (!ok || value == 0 || value > 65535) {
+  if (problem == xmate::net::HostPortProblem::kBadPort) {
     error = QStringLiteral("\"%1\" is not a port. Use a number from 1 to 65535 (the RCI default is 1337).")
-                .arg(trimmed.mid(colon + 1));
+                .arg(QString::fromStdString(split.port_text));
     return false;
   }
-  const QString name = trimmed.left(colon);
+  const QString name = QString::fromStdString(split.host);
   if (name.contains(QLatin1Char(' '))) {
     error = QStringLiteral("\"%1\" is not a host name or IP address (it contains a space).").arg(name);
     return false;
   }
   host = name;
-  port = quint16(value);
+  port = split.port;
   return true;
 }
 
