@@ -97,15 +97,20 @@ Correction JointStream::onCycle(const RobDecoder& rob) {
   }
   now_.ipoc = rob.ipoc();
   ++now_.cycles;
-  if (CycleMotion* motion = motion_.load(std::memory_order_acquire)) {
+  // in_motion_ is up while the motion may be in use here: run() takes a motion back by clearing
+  // motion_ and then waiting for in_motion_ to fall (both sequentially consistent, so either this
+  // thread sees the cleared pointer or run() sees the flag).
+  in_motion_.store(true);
+  if (CycleMotion* motion = motion_.load()) {
     std::array<double, 6> q{};
     const bool last = motion->command(now_, q);
     for (size_t i = 0; i < 6; ++i) correction_[i] = q[i] - now_.q_on[i];
     if (last) {
-      motion_.store(nullptr, std::memory_order_relaxed);
+      motion_.store(nullptr);
       motion_done_.store(true, std::memory_order_release);
     }
   }
+  in_motion_.store(false);
   Correction c;
   c.kind = Correction::Kind::kAxis;
   for (size_t i = 0; i < 6; ++i) {
@@ -140,10 +145,10 @@ void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_ro
     const bool receiving = link_.receiving();
     state(s);
     if (!receiving || s.session != session) {
-      // The link's thread may still hold the pointer: take it back before `motion` goes away.
-      CycleMotion* expected = &motion;
-      motion_.compare_exchange_strong(expected, nullptr);
-      while (link_.receiving() && !motion_done_.load() && motion_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      // Take the motion back, and wait until the link's thread is not inside it, before `motion`
+      // goes away.
+      motion_.store(nullptr);
+      while (in_motion_.load()) std::this_thread::yield();
       throw std::runtime_error(receiving ? "RSI was switched on again during the motion (a new RSI session): the "
                                            "motion was abandoned; run it again from where the robot is"
                                          : "RSI stopped during the motion (the robot stopped sending): check the "

@@ -92,6 +92,7 @@ class JointStream {
   std::array<double, 6> correction_{};  // rad, total since RSI_ON
   std::atomic<CycleMotion*> motion_{nullptr};
   std::atomic<bool> motion_done_{false};
+  std::atomic<bool> in_motion_{false};  // the link's thread may be using motion_ (see onCycle)
   net::Seqlock<StreamState> state_;
 };
 
