@@ -222,7 +222,7 @@ bool Decoder::decode(std::string_view datagram) {
   }
   std::copy(values_.begin(), values_.end(), staged_.begin());
   staged_seen_ = seen_;  // same size: no allocation
-  std::memcpy(parser_->buffer.data(), datagram.data(), datagram.size());
+  if (!datagram.empty()) std::memcpy(parser_->buffer.data(), datagram.data(), datagram.size());
   arena_->used = 0;
   arena_->exhausted = false;
   ArenaScope scope(arena_.get());
@@ -330,7 +330,7 @@ void Encoder::setText(int slot, std::string_view text) { texts_[size_t(slot)].as
 
 void TextValue::assign(std::string_view text) {
   length = uint8_t(std::min(text.size(), kMaxText - 1));
-  std::memcpy(bytes.data(), text.data(), length);
+  if (length > 0) std::memcpy(bytes.data(), text.data(), length);  // an empty view may have no data
 }
 
 // Appends to a fixed buffer; remembers when it ran out.
@@ -344,7 +344,7 @@ struct Encoder::Writer {
       full = true;
       return;
     }
-    std::memcpy(out + length, s.data(), s.size());
+    if (!s.empty()) std::memcpy(out + length, s.data(), s.size());
     length += s.size();
   }
   void putEscaped(std::string_view s) {
