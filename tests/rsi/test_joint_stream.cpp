@@ -135,6 +135,15 @@ void TestJointStream::holdsStillThenStreamsAMotion() {
   QCOMPARE(last_a2.load(), 0.0);
   QVERIFY(stream.state(s));
   QCOMPARE(s.q_command[0] * kDeg, 12.0);
+  // A motion planned in another RSI session is never streamed.
+  Ramp stale(1.0, 10);
+  try {
+    stream.run(stale, std::chrono::seconds(1), s.session + 1);
+    QFAIL("a motion of another session was streamed");
+  } catch (const std::runtime_error& e) {
+    QVERIFY2(QString(e.what()).startsWith("RSI was switched on again after the motion was planned"), e.what());
+  }
+  QCOMPARE(stale.calls(), 0);
   quit = true;
   krc.join();
 }

@@ -101,7 +101,8 @@ Correction JointStream::onCycle(const RobDecoder& rob) {
   // motion_ and then waiting for in_motion_ to fall (both sequentially consistent, so either this
   // thread sees the cleared pointer or run() sees the flag).
   in_motion_.store(true);
-  if (CycleMotion* motion = motion_.load()) {
+  CycleMotion* motion = motion_.load();
+  if (motion && motion_session_.load() == now_.session) {  // never into another RSI session
     std::array<double, 6> q{};
     const bool last = motion->command(now_, q);
     for (size_t i = 0; i < 6; ++i) correction_[i] = q[i] - now_.q_on[i];
@@ -121,7 +122,7 @@ Correction JointStream::onCycle(const RobDecoder& rob) {
   return c;
 }
 
-void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot) {
+void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot, uint32_t planned_in) {
   const auto deadline = std::chrono::steady_clock::now() + wait_for_robot;
   StreamState s;
   while (!link_.receiving() || !state(s)) {
@@ -132,6 +133,9 @@ void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_ro
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   const uint32_t session = s.session;
+  if (planned_in != 0 && planned_in != session)
+    throw std::runtime_error("RSI was switched on again after the motion was planned (a new RSI session): run it "
+                             "again from where the robot is");
   const int cycle_ms = link_.options().cycle_ms;
   if ((s.ipoc_step == 4 || s.ipoc_step == 12) && s.ipoc_step != uint64_t(cycle_ms))
     throw std::runtime_error("the robot runs RSI every " + std::to_string(s.ipoc_step) + " ms (its IPOC advances so), " +
@@ -139,7 +143,8 @@ void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_ro
                              " ms cycles; set the cycle to " + std::to_string(s.ipoc_step) + " ms (" +
                              (s.ipoc_step == 4 ? "RSI_ON with #IPO_FAST" : "RSI_ON without #IPO_FAST") + ")");
   motion_done_.store(false, std::memory_order_relaxed);
-  motion_.store(&motion, std::memory_order_release);
+  motion_session_.store(session);
+  motion_.store(&motion);
   for (;;) {
     if (motion_done_.load(std::memory_order_acquire)) return;
     const bool receiving = link_.receiving();

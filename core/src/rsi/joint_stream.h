@@ -65,8 +65,10 @@ class JointStream {
   // `motion` until its last command, and returns. Throws std::runtime_error when RSI does not run,
   // when the robot's IPOC advances by 4 or 12 ms a cycle and that is not the link's cycle_ms (the
   // motion would run at the wrong speed), or when RSI stops or restarts during the motion (the robot
-  // then holds where RSI left it).
-  void run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot = std::chrono::seconds(5));
+  // then holds where RSI left it). `session` (non-zero): the RSI session the motion was planned in
+  // (StreamState::session); a motion is never streamed into another one.
+  void run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot = std::chrono::seconds(5),
+           uint32_t session = 0);
 
   // Refusal text (empty when fine) for one joint sample (6 values, rad) `spacing` seconds after
   // `previous` (nullptr for the first): outside the axis range, an axis faster than its rated
@@ -91,6 +93,7 @@ class JointStream {
   StreamState now_;
   std::array<double, 6> correction_{};  // rad, total since RSI_ON
   std::atomic<CycleMotion*> motion_{nullptr};
+  std::atomic<uint32_t> motion_session_{0};  // the session motion_ belongs to
   std::atomic<bool> motion_done_{false};
   std::atomic<bool> in_motion_{false};  // the link's thread may be using motion_ (see onCycle)
   net::Seqlock<StreamState> state_;

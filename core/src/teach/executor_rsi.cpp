@@ -185,7 +185,7 @@ void Executor::runRsiMotion(const Program& program, size_t index, InstructionRep
     return plan_time >= total;
   };
   LambdaMotion<decltype(cycle)> motion(cycle);
-  if (total > 0) stream.run(motion);
+  if (total > 0) stream.run(motion, std::chrono::seconds(5), state.session);
 
   report.duration = double(cycles) * dt;
   report.max_joint_error = max_joint_error;
