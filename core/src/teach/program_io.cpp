@@ -246,7 +246,11 @@ Program programFromJson(const Json& doc) {
   const Json& robot = require(doc, "robot", "robot", w);
   if (!robot.is_string()) w.fail("robot", "expected a model name string, " + got(robot));
   const model::RobotSpec* spec = model::findRobotSpec(robot.get_ref<const std::string&>());
-  if (!spec) w.fail("robot", "unknown model \"" + robot.get<std::string>() + "\" (known: xmate3_pro, xmate7_pro, xmate3, xmate7)");
+  if (!spec) {
+    std::string known;
+    for (const model::RobotSpec& s : model::allRobotSpecs()) known += (known.empty() ? "" : ", ") + std::string(s.name);
+    w.fail("robot", "unknown model \"" + robot.get<std::string>() + "\" (known: " + known + ")");
+  }
   const Json& list = require(doc, "instructions", "instructions", w);
   if (!list.is_array()) w.fail("instructions", "expected an array, " + got(list));
   Program p;
