@@ -15,6 +15,7 @@
 #include "net/realtime.h"
 #include "options.h"
 #include "sim/ft_sensor.h"
+#include "sim/krc_control.h"
 #include "sim/krc_server.h"
 #include "sim/server.h"
 #include "sim/server_control.h"
@@ -96,12 +97,21 @@ int runRsi(const rcisim::Options& o, const sigset_t& stop_signals) {
   xmate::sim::KrcServer krc(c);
   krc.krc().setExternalWrench(o.external_wrench);
   krc.start();
+  std::unique_ptr<xmate::sim::ControlPort> control;
+  if (o.control_port) {
+    control = std::make_unique<xmate::sim::ControlPort>(
+        [&krc](std::string_view line) { return xmate::sim::executeKrcControlLine(krc.krc(), line); }, o.control_bind_ip,
+        *o.control_port);
+    control->start();
+  }
 
   if (o.print_port) std::cout << krc.port() << '\n';
   std::cout << "rci-sim: " << o.model->display_name << " (KUKA RSI) on " << o.bind_ip << ':' << krc.port()
             << ", sending <Rob> to " << krc.target() << " every " << o.cycle_ms << " ms, "
             << (o.rsi_relative ? "#RELATIVE" : "#ABSOLUTE") << ", Timeout " << krc.krc().timeoutLimit() << ", context "
             << *o.rsi_context << '\n';
+  if (control)
+    std::cout << "rci-sim: control port on " << o.control_bind_ip << ':' << control->port() << " (type help)\n";
   if (ft_sensor)
     std::cout << "rci-sim: F/T sensor (Net F/T, RDT) on " << o.bind_ip << ':' << ft_sensor->port()
               << ", reading the arm's external wrench\n";
@@ -121,6 +131,7 @@ int runRsi(const rcisim::Options& o, const sigset_t& stop_signals) {
     signal_number = waitForStop(stop_signals, -1);
   }
   logLine(std::string("stopping (") + (signal_number == SIGINT ? "SIGINT" : "SIGTERM") + ")");
+  if (control) control->stop();
   krc.stop();
   const xmate::sim::KrcStatus s = krc.krc().status();
   logLine("<Rob> sent " + std::to_string(s.robs_sent) + ", answers used " + std::to_string(s.answers_used) + ", late " +

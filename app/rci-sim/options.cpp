@@ -124,7 +124,8 @@ void describe(CLI::App& app, Options& o, std::string& model, long& control_port,
       ->type_name("MS")
       ->check(wholeNumber(1, 60000));
   app.add_option("--control-port", control_port,
-                 "serve the control port (scene events, packet faults; 0 = free port)")
+                 "serve the control port (scene events, packet faults; 0 = free port); with --rsi the simulated "
+                 "KRC's (push, DIGIN, override, answer faults, RSI off)")
       ->type_name("P")
       ->check(wholeNumber(0, 65535));
   app.add_option_function<long>(
@@ -271,8 +272,6 @@ Options parseOptions(int argc, const char* const* argv) {
       o.start_joints_deg = numberList<6>("--start-joints-deg", rsi.start_joints, "A1 to A6 in degrees");
     if (!rsi.wrench.empty())
       o.external_wrench = numberList<6>("--external-wrench", rsi.wrench, "Fx Fy Fz in N, Tx Ty Tz in Nm");
-    if (control_port >= 0)
-      throw UsageError("--control-port serves the xMate simulator; the simulated KRC (--rsi) has no control port yet");
   } else {
     for (const char* option : {"--rsi-target", "--rsi-mode", "--cycle-ms", "--start-joints-deg", "--rsi-restart-pause",
                                "--rsi-ipoc-start", "--external-wrench", "--rsi-drop-answers", "--rsi-delay-answers",

@@ -20,6 +20,7 @@
 #include "rsi_test_support.h"
 #include "sim/ft_sensor.h"
 #include "sim/krc.h"
+#include "sim/krc_control.h"
 #include "sim/krc_server.h"
 
 using namespace xmate;
@@ -544,6 +545,40 @@ class TestSimKrc : public QObject {
     h.cycles(5);
     QCOMPARE(h.krc->status().state, KrcState::kRunning);
     QCOMPARE(h.krc->status().session, 2u);
+  }
+
+  // The control port's lines (rci-sim --rsi --control-port) reach the same scene and faults.
+  void controlLinesDriveTheSceneAndFaults() {
+    QTemporaryDir dir;
+    Harness h(configFor(axisContext(dir)));
+    Krc& k = *h.krc;
+    QCOMPARE(QString::fromStdString(executeKrcControlLine(k, "wrench 0 0 -20 0 0 0")),
+             QString("ok wrench 0 0 -20 N, 0 0 0 Nm (base frame, at the flange)"));
+    h.cycle();
+    QCOMPARE(k.flangeWrench()[2] * k.flangeWrench()[2] + k.flangeWrench()[0] * k.flangeWrench()[0] +
+                 k.flangeWrench()[1] * k.flangeWrench()[1],
+             400.0);
+    QCOMPARE(QString::fromStdString(executeKrcControlLine(k, "di 3 1")), QString("ok di 3 = 1"));
+    QCOMPARE(QString::fromStdString(executeKrcControlLine(k, "override 50")), QString("ok override 50 %"));
+    h.cycle();
+    QCOMPARE(k.status().digin, uint64_t(1) << 2);
+    QCOMPARE(k.status().override_pct, 50.0);
+    QVERIFY(executeKrcControlLine(k, "drop answers 2").rfind("ok dropping the next 2 answers", 0) == 0);
+    h.cycles(3);
+    QCOMPARE(k.status().answers_dropped, uint64_t(2));
+    QVERIFY(executeKrcControlLine(k, "suspend 20").rfind("ok RSI off for 20 ms", 0) == 0);
+    h.cycle();
+    QCOMPARE(k.status().state, KrcState::kSuspended);
+    const std::string status = executeKrcControlLine(k, "status");
+    QVERIFY2(status.rfind("ok state=suspended", 0) == 0 && status.find(" answers_dropped=2 ") != std::string::npos,
+             status.c_str());
+    // Mistakes say what was wrong and how to write it.
+    QCOMPARE(QString::fromStdString(executeKrcControlLine(k, "di 65 1")),
+             QString("error di: the input index must be a whole number from 1 to 64, got '65'; usage: di INDEX(1-64) "
+                     "LEVEL(0|1)"));
+    QVERIFY(executeKrcControlLine(k, "drop states 2").rfind("error drop: expected 'answers', got 'states'", 0) == 0);
+    QVERIFY(executeKrcControlLine(k, "estop on").rfind("error unknown command 'estop'; type help", 0) == 0);
+    QVERIFY(executeKrcControlLine(k, "help").find("wrench FX FY FZ TX TY TZ") != std::string::npos);
   }
 
   void smartPadMessageAndTechnologyValues() {

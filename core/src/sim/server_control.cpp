@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "net/realtime.h"
+#include "sim/control_lines.h"
 #include "sim/server_faults.h"
 
 namespace xmate::sim {
@@ -21,53 +22,7 @@ namespace {
 constexpr size_t kMaxLineLength = 1024;
 constexpr int kPollMs = 100;
 
-using Words = std::vector<std::string_view>;
-
-Words splitWords(std::string_view line) {
-  Words words;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    const size_t start = i;
-    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
-
-// A command's mistake: the message says what was wrong; the usage is added by the dispatcher.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-double parseNumber(std::string_view word, const char* what) {
-  double value = 0;
-  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (ec != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
-    throw UsageError(std::string(what) + " must be a finite number, got '" + std::string(word) + "'");
-  return value;
-}
-
-int parseInteger(std::string_view word, const char* what, int min, int max) {
-  int value = 0;
-  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (ec != std::errc() || end != word.data() + word.size() || value < min || value > max)
-    throw UsageError(std::string(what) + " must be a whole number from " + std::to_string(min) + " to " +
-                     std::to_string(max) + ", got '" + std::string(word) + "'");
-  return value;
-}
-
-bool parseOnOff(std::string_view word) {
-  if (word == "on" || word == "1") return true;
-  if (word == "off" || word == "0") return false;
-  throw UsageError("expected on or off, got '" + std::string(word) + "'");
-}
-
-void expectWords(const Words& w, size_t count) {
-  if (w.size() != count)
-    throw UsageError("expected " + std::to_string(count - 1) + " argument" + (count == 2 ? "" : "s") + ", got " +
-                     std::to_string(w.size() - 1));
-}
+using UsageError = ControlUsageError;
 
 std::string bits(const std::array<bool, 6>& b) {
   std::string s;
@@ -84,12 +39,6 @@ const char* safetyStopName(int api_value) {
 }
 
 // ---- The commands ------------------------------------------------------------------------------------
-
-struct ControlCommand {
-  const char* name;
-  const char* usage;
-  std::function<std::string(Server&, const Words&)> run;  // returns the text after "ok"
-};
 
 std::string runWrench(Server& server, const Words& w) {
   expectWords(w, 7);
@@ -192,8 +141,8 @@ std::string runHelp(Server&, const Words& w) {
   return controlHelp();
 }
 
-const std::vector<ControlCommand>& commands() {
-  static const std::vector<ControlCommand> list = {
+const std::vector<ControlCommand<Server>>& commands() {
+  static const std::vector<ControlCommand<Server>> list = {
       {"wrench", "wrench FX FY FZ TX TY TZ (N, Nm; base frame, at the TCP)", runWrench},
       {"estop", "estop on|off",
        [](Server& s, const Words& w) { return runSwitch(w, [&](bool on) { s.setEmergencyStop(on); }, "estop"); }},
@@ -223,27 +172,9 @@ const std::vector<ControlCommand>& commands() {
 
 }  // namespace
 
-std::string controlHelp() {
-  std::string text = "commands:";
-  for (const ControlCommand& c : commands()) text += std::string(" | ") + c.usage;
-  return text + " | quit";
-}
+std::string controlHelp() { return commandsHelp(commands()); }
 
-std::string executeControlLine(Server& server, std::string_view line) {
-  const Words words = splitWords(line);
-  if (words.empty()) return "error empty line; type help";
-  for (const ControlCommand& c : commands()) {
-    if (words[0] != c.name) continue;
-    try {
-      return "ok " + c.run(server, words);
-    } catch (const UsageError& e) {
-      return std::string("error ") + c.name + ": " + e.what() + "; usage: " + c.usage;
-    } catch (const std::exception& e) {
-      return std::string("error ") + c.name + ": " + e.what();
-    }
-  }
-  return "error unknown command '" + std::string(words[0]) + "'; type help for the list";
-}
+std::string executeControlLine(Server& server, std::string_view line) { return executeCommand(server, commands(), line); }
 
 std::string formatStatus(const ServerStatus& st) {
   std::ostringstream o;
@@ -275,7 +206,11 @@ std::string formatStatus(const ServerStatus& st) {
 // ---- ControlPort ---------------------------------------------------------------------------------------
 
 ControlPort::ControlPort(Server& server, std::string bind_ip, uint16_t port)
-    : server_(server), bind_ip_(std::move(bind_ip)), port_(port) {}
+    : ControlPort([&server](std::string_view line) { return executeControlLine(server, line); }, std::move(bind_ip),
+                  port) {}
+
+ControlPort::ControlPort(Execute execute, std::string bind_ip, uint16_t port)
+    : execute_(std::move(execute)), bind_ip_(std::move(bind_ip)), port_(port) {}
 
 ControlPort::~ControlPort() { stop(); }
 
@@ -318,7 +253,7 @@ void ControlPort::serve(net::TcpConnection& conn) {
       return;
     }
     if (line == "quit" || line == "exit") return;
-    const std::string answer = executeControlLine(server_, line) + "\n";
+    const std::string answer = execute_(line) + "\n";
     line.clear();
     if (conn.sendAll(answer.data(), answer.size(), 1000) != net::IoResult::kOk) return;
   }

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -24,10 +25,13 @@ std::string controlHelp();
 // "running=1 killed=0 ... " -- the status as one line of key=value pairs.
 std::string formatStatus(const ServerStatus& status);
 
-// Serves the line protocol on a TCP port, one connection at a time, on its own thread.
+// Serves the line protocol on a TCP port, one connection at a time, on its own thread: each line
+// goes to `execute` (the simulated xMate's commands, or the simulated KRC's: krc_control.h).
 class ControlPort {
  public:
+  using Execute = std::function<std::string(std::string_view line)>;  // called on the port's thread
   ControlPort(Server& server, std::string bind_ip, uint16_t port);
+  ControlPort(Execute execute, std::string bind_ip, uint16_t port);
   ~ControlPort();  // stop()s
   ControlPort(const ControlPort&) = delete;
   ControlPort& operator=(const ControlPort&) = delete;
@@ -42,7 +46,7 @@ class ControlPort {
   void run();
   void serve(net::TcpConnection& conn);
 
-  Server& server_;
+  Execute execute_;
   std::string bind_ip_;
   uint16_t port_;
   net::TcpListener listener_;

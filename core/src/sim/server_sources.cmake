@@ -8,4 +8,6 @@ target_sources(rci_core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/server_faults.cpp
   ${CMAKE_CURRENT_LIST_DIR}/server_session.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ft_sensor.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/krc_server.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/krc_server.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/krc_control.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/control_lines.cpp)

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: Apache-2.0
+// The control ports' line protocol, shared by the simulated xMate (server_control.h) and the
+// simulated KRC (krc_control.h): a line split into words, argument parsers whose errors say what
+// was wrong, and a command table that answers each line with "ok ..." or "error <what>; usage: ...".
+// Any thread; allocates.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace xmate::sim {
+
+using Words = std::vector<std::string_view>;
+
+// The words of a line, split at white space.
+Words splitWords(std::string_view line);
+
+// A command's mistake: the message says what was wrong; the dispatcher adds the usage.
+struct ControlUsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Each throws ControlUsageError naming `what` and what it takes.
+double parseNumber(std::string_view word, const char* what);
+int parseInteger(std::string_view word, const char* what, int min, int max);
+bool parseOnOff(std::string_view word);
+void expectWords(const Words& words, size_t count);  // the command and count - 1 arguments
+
+template <class Target>
+struct ControlCommand {
+  const char* name;
+  const char* usage;
+  std::function<std::string(Target&, const Words&)> run;  // returns the text after "ok"
+};
+
+// "commands: usage | usage | ... | quit".
+template <class Target>
+std::string commandsHelp(const std::vector<ControlCommand<Target>>& commands) {
+  std::string text = "commands:";
+  for (const ControlCommand<Target>& c : commands) text += std::string(" | ") + c.usage;
+  return text + " | quit";
+}
+
+// Runs the command the line names; never throws.
+template <class Target>
+std::string executeCommand(Target& target, const std::vector<ControlCommand<Target>>& commands, std::string_view line) {
+  const Words words = splitWords(line);
+  if (words.empty()) return "error empty line; type help";
+  for (const ControlCommand<Target>& c : commands) {
+    if (words[0] != c.name) continue;
+    try {
+      return "ok " + c.run(target, words);
+    } catch (const ControlUsageError& e) {
+      return std::string("error ") + c.name + ": " + e.what() + "; usage: " + c.usage;
+    } catch (const std::exception& e) {
+      return std::string("error ") + c.name + ": " + e.what();
+    }
+  }
+  return "error unknown command '" + std::string(words[0]) + "'; type help for the list";
+}
+
+}  // namespace xmate::sim
