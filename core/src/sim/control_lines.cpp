@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace xmate::sim {
 
@@ -47,6 +48,21 @@ void expectWords(const Words& w, size_t count) {
   if (w.size() != count)
     throw ControlUsageError("expected " + std::to_string(count - 1) + " argument" + (count == 2 ? "" : "s") + ", got " +
                             std::to_string(w.size() - 1));
+}
+
+std::array<double, 6> parseWrench(const Words& w) {
+  expectWords(w, 7);
+  std::array<double, 6> wrench{};
+  const char* names[6] = {"fx", "fy", "fz", "tx", "ty", "tz"};
+  for (size_t i = 0; i < 6; ++i) wrench[i] = parseNumber(w[i + 1], names[i]);
+  return wrench;
+}
+
+std::string wrenchText(const std::array<double, 6>& wrench, const char* where) {
+  char text[200];
+  std::snprintf(text, sizeof text, "wrench %g %g %g N, %g %g %g Nm (base frame, %s)", wrench[0], wrench[1], wrench[2],
+                wrench[3], wrench[4], wrench[5], where);
+  return text;
 }
 
 }  // namespace xmate::sim

@@ -5,6 +5,7 @@
 // Any thread; allocates.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,11 @@ double parseNumber(std::string_view word, const char* what);
 int parseInteger(std::string_view word, const char* what, int min, int max);
 bool parseOnOff(std::string_view word);
 void expectWords(const Words& words, size_t count);  // the command and count - 1 arguments
+
+// "wrench FX FY FZ TX TY TZ": the six numbers (N, Nm), and the answer's text naming `where` it acts
+// ("at the TCP", "at the flange").
+std::array<double, 6> parseWrench(const Words& words);
+std::string wrenchText(const std::array<double, 6>& wrench, const char* where);
 
 template <class Target>
 struct ControlCommand {

@@ -16,15 +16,9 @@ constexpr int kMaxCount = kMaxFaultCount;  // as the simulated xMate's faults
 constexpr int kMaxSuspendMs = 600'000;
 
 std::string runWrench(Krc& krc, const Words& w) {
-  expectWords(w, 7);
-  std::array<double, 6> wrench{};
-  const char* names[6] = {"fx", "fy", "fz", "tx", "ty", "tz"};
-  for (size_t i = 0; i < 6; ++i) wrench[i] = parseNumber(w[i + 1], names[i]);
+  const std::array<double, 6> wrench = parseWrench(w);
   krc.setExternalWrench(wrench);
-  char text[200];
-  std::snprintf(text, sizeof text, "wrench %g %g %g N, %g %g %g Nm (base frame, at the flange)", wrench[0], wrench[1],
-                wrench[2], wrench[3], wrench[4], wrench[5]);
-  return text;
+  return wrenchText(wrench, "at the flange");
 }
 
 std::string runDigitalInput(Krc& krc, const Words& w) {

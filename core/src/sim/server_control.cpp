@@ -41,15 +41,9 @@ const char* safetyStopName(int api_value) {
 // ---- The commands ------------------------------------------------------------------------------------
 
 std::string runWrench(Server& server, const Words& w) {
-  expectWords(w, 7);
-  std::array<double, 6> wrench{};
-  const char* names[6] = {"fx", "fy", "fz", "tx", "ty", "tz"};
-  for (size_t i = 0; i < 6; ++i) wrench[i] = parseNumber(w[i + 1], names[i]);
+  const std::array<double, 6> wrench = parseWrench(w);
   server.setExternalWrench(wrench);
-  char text[200];
-  std::snprintf(text, sizeof text, "wrench %g %g %g N, %g %g %g Nm (base frame, at the TCP)", wrench[0], wrench[1],
-                wrench[2], wrench[3], wrench[4], wrench[5]);
-  return text;
+  return wrenchText(wrench, "at the TCP");
 }
 
 std::string runSwitch(const Words& w, const std::function<void(bool)>& apply, const char* name) {
