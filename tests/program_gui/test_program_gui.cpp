@@ -130,6 +130,7 @@ class TestProgramGui : public QObject {
   void listEditing();
   void unsavedChangesPrompt();
   void anotherToolRefusesTeaching();
+  void programOfAnotherModelShowsOneProblem();
 };
 
 void TestProgramGui::initTestCase() {
@@ -489,6 +490,26 @@ void TestProgramGui::unsavedChangesPrompt() {
   QCOMPARE(rows(), rows_before);
   QVERIFY2(text(QStringLiteral("program.status")).contains(QStringLiteral("instruction 1")),
            qPrintable(text(QStringLiteral("program.status"))));
+}
+
+// A KUKA program opened at an xMate: no preview of it on this arm, and one problem saying which
+// robot it was taught for -- not what tracing its joints on this arm would say.
+void TestProgramGui::programOfAnotherModelShowsOneProblem() {
+  unsaved_choice_ = ProgramPanel::UnsavedChoice::kDiscard;
+  xmate::teach::Program kuka;
+  kuka.robot = xmate::model::findRobotSpec("kr6_r900_sixx");
+  kuka.instructions.push_back(xmate::teach::moveJ(jointTarget({0, -1.2, 1.4, 0, 1.2, 0, 0}), 0.3, "K1"));
+  openThroughButton(writeProgram(QStringLiteral("kuka.json"), kuka));
+  QCOMPARE(rows(), 1);
+  QTRY_VERIFY_WITH_TIMEOUT(find<QListWidget>(QStringLiteral("program.problems"))->count() == 1, kWaitMs);
+  const QString problem = find<QListWidget>(QStringLiteral("program.problems"))->item(0)->text();
+  QVERIFY2(problem.contains(QStringLiteral("taught for the KR 6 R900 sixx")) &&
+               problem.contains(QStringLiteral("but the robot is the xMate")),
+           qPrintable(problem));
+  QVERIFY(session_->programOverlay().waypoints.empty());
+  QVERIFY(session_->programOverlay().path.empty());
+  click(QStringLiteral("program.new"));
+  QTRY_COMPARE_WITH_TIMEOUT(find<QListWidget>(QStringLiteral("program.problems"))->count(), 0, kWaitMs);
 }
 
 // The first pose taught records the robot's tool in the program; with another tool on the robot,

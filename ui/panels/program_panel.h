@@ -139,6 +139,9 @@ class ProgramPanel : public PanelBase {
   // worker thread (it plans every motion, too slow for the GUI thread at every edit). One trace at a
   // time: a request while one runs traces the newest program and pose after it.
   void updateOverlay();
+  // requireRobot's refusal when the program was taught for another model than the robot's (or the
+  // chosen target's), else "".
+  std::string otherModelProblem() const;
   void startTrace();
   void traceFinished();
   // Each tick: traces again when the arm rests away from where the last trace started, or its

@@ -24,6 +24,7 @@
 #include "panels/program_model.h"
 #include "panels/program_panel.h"
 #include "session/session.h"
+#include "teach/program_io.h"
 #include "teach/recording.h"
 #include "text/operator_text.h"
 
@@ -285,8 +286,27 @@ void ProgramPanel::sessionClosed() {
   updateButtons();
 }
 
+std::string ProgramPanel::otherModelProblem() const {
+  const xmate::XmateType type = session().robot() ? session().robot()->type() : session().target().type;
+  try {
+    xmate::teach::requireRobot(program(), type);
+    return {};
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
 void ProgramPanel::updateOverlay() {
   const auto& p = program();
+  // A program for another model: its poses and joints mean nothing for this robot -- no preview,
+  // and that one problem instead of what tracing it on this arm would say.
+  if (const std::string other = otherModelProblem(); !other.empty()) {
+    overlay_ = {};
+    trace_again_ = false;
+    if (!running_) showProblems({{0, other}});
+    session().setProgramOverlay(overlay_);
+    return;
+  }
   const xmate::teach::TraceOptions options = traceOptions();
   std::optional<xmate::model::ArmKinematics> model;  // for targets taught as joints only
   auto position = [&](const xmate::teach::Target& t) -> std::array<double, 3> {
@@ -365,7 +385,7 @@ void ProgramPanel::traceFinished() {
     startTrace();
     return;
   }
-  if (!haveLiveState()) return;
+  if (!haveLiveState() || !otherModelProblem().empty()) return;  // nothing of it applies now
   const xmate::teach::ProgramTrace trace = trace_watcher_->result();
   overlay_.path.clear();
   for (const auto& t : trace.instructions) overlay_.path.insert(overlay_.path.end(), t.tcp_path.begin(), t.tcp_path.end());
