@@ -6,6 +6,12 @@
 // text, echoes the IPOC and stays under 1 KB; and neither allocates once set up.
 #include <QtTest>
 
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iterator>
+#include <random>
 #include <string>
 
 #include "../planning/allocation_counter.h"
@@ -43,6 +49,7 @@ class TestRsiCodec : public QObject {
   void robIsReadIntoItsSlots();
   void badDatagramsAreRefusedAndKeepTheLastValues_data();
   void badDatagramsAreRefusedAndKeepTheLastValues();
+  void numbersAreReadExactlyAsFromChars();
   void senCarriesTheReceiveElements();
   void neitherAllocatesOnceSetUp();
 };
@@ -110,6 +117,45 @@ void TestRsiCodec::badDatagramsAreRefusedAndKeepTheLastValues() {
   QCOMPARE(d.value(d.slot("Delay", "D")), 3.0);
   QVERIFY(d.decode(robDatagram("100")));  // and the next good one is read
   QCOMPARE(d.ipoc(), uint64_t(100));
+}
+
+// The decoder reads plain decimals ("-35.250000") on a fast path of its own; every number must
+// still come out as the very double std::from_chars makes of the same text.
+void TestRsiCodec::numbersAreReadExactlyAsFromChars() {
+  RobDecoder d(sampleConfig());
+  const int slot = d.slot("GearTorque", "A1");
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> magnitude(-7.0, 7.0);
+  const char* const formats[] = {"%.0f", "%.1f", "%.4f", "%.6f", "%.9f", "%.12f", "%.17g", "%g", "%.3e"};
+  int checked = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double v = std::copysign(std::pow(10.0, magnitude(random)), double(random() % 2) - 0.5);
+    char text[64];
+    std::snprintf(text, sizeof text, formats[k % std::size(formats)], v);
+    double expected = 0;
+    std::from_chars(text, text + std::strlen(text), expected);
+    const std::string rob = std::string("<Rob><GearTorque A1=\"") + text + "\"/><IPOC>1</IPOC></Rob>";
+    QVERIFY2(d.decode(rob), d.reason());
+    const double got = d.value(slot);
+    if (std::memcmp(&expected, &got, sizeof expected) != 0)
+      QFAIL(qPrintable(QStringLiteral("\"%1\" read as %2, from_chars gives %3")
+                           .arg(text)
+                           .arg(d.value(slot), 0, 'g', 17)
+                           .arg(expected, 0, 'g', 17)));
+    ++checked;
+  }
+  QCOMPARE(checked, 20000);
+  // The edges of the fast path: 15 digits (taken), 16 (left to from_chars), a bare point, signs.
+  const std::pair<const char*, double> edges[] = {
+      {"123456789.012345", 123456789.012345}, {"1234567890.123456", 1234567890.123456}, {"-0.000000", -0.0},
+      {"5.", 5.0}, {".5", 0.5}, {"-.5", -0.5}, {"007.250", 7.25}, {"1e-05", 1e-05}};
+  for (const auto& [text, value] : edges) {
+    QVERIFY2(d.decode(std::string("<Rob><GearTorque A1=\"") + text + "\"/><IPOC>1</IPOC></Rob>"), text);
+    QCOMPARE(d.value(slot), value);
+    QCOMPARE(std::signbit(d.value(slot)), std::signbit(value));
+  }
+  for (const char* bad : {"1.2.3", "-", "1-2", "--1", "1..2"})
+    QVERIFY2(!d.decode(std::string("<Rob><GearTorque A1=\"") + bad + "\"/><IPOC>1</IPOC></Rob>"), bad);
 }
 
 void TestRsiCodec::senCarriesTheReceiveElements() {

@@ -88,6 +88,37 @@ inline std::string_view trim(std::string_view s) {
   return s;
 }
 
+// The common case of a KRC's numbers, "-35.250000": an optional minus, digits, and optionally a
+// point and more digits, at most 15 digits in all. The digits form an integer below 2^53 and the
+// divisor is an exact power of ten, so the one division is correctly rounded -- the same double
+// from_chars gives, in a fraction of its time. False (and out untouched) for anything else.
+inline bool parsePlainDecimal(std::string_view text, double& out) {
+  static constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7,
+                                            1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  const char* p = text.data();
+  const char* const end = p + text.size();
+  const bool negative = p != end && *p == '-';
+  if (negative) ++p;
+  uint64_t digits = 0;
+  int count = 0;
+  int decimals = -1;  // -1 before the point
+  for (; p != end; ++p) {
+    if (*p >= '0' && *p <= '9') {
+      if (++count > 15) return false;
+      digits = digits * 10 + uint64_t(*p - '0');
+      if (decimals >= 0) ++decimals;
+    } else if (*p == '.' && decimals < 0 && count > 0) {
+      decimals = 0;
+    } else {
+      return false;
+    }
+  }
+  if (count == 0 || decimals == 0) return false;  // "", "-", "5.": left to from_chars
+  const double magnitude = double(digits) / kPowersOfTen[decimals < 0 ? 0 : decimals];
+  out = negative ? -magnitude : magnitude;
+  return true;
+}
+
 // A value of the config's type from datagram text: numbers in any of the C locale's forms
 // (10.000000, -0.0, 1e-05, +3), BOOL as 0/1/TRUE/FALSE. False if it is none of those.
 inline bool parseValue(std::string_view text, ValueType type, double& out) {
@@ -97,6 +128,7 @@ inline bool parseValue(std::string_view text, ValueType type, double& out) {
     if (equalsAnyCase(text, "false")) return out = 0, true;
   }
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (parsePlainDecimal(text, out)) return true;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
   return ec == std::errc() && end == text.data() + text.size() && std::isfinite(out);
 }
