@@ -20,6 +20,7 @@
 #include "cli.h"
 #include "model/resource_locator.h"
 #include "model/robot_spec.h"
+#include "rsi/digital_io.h"
 #include "rsi/joint_stream.h"
 #include "rsi/link.h"
 #include "sim/krc_server.h"
@@ -192,6 +193,9 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
   link_options.cycle_ms = o.cycle_ms;
   rsi::Link link(config, link_options);
   rsi::JointStream stream(link, spec, rsi::axisCorrectionLimits(context));
+  rsi::DigitalIoMap io_map = rsi::digitalIoMap(context, config);
+  std::unique_ptr<rsi::DigitalIo> io;
+  if (!io_map.inputs.empty() || !io_map.outputs.empty()) io = std::make_unique<rsi::DigitalIo>(link, std::move(io_map));
   link.start();
   std::unique_ptr<sim::KrcServer> krc;
   if (simulated) {
@@ -213,7 +217,7 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
               std::filesystem::path(context_path).filename().c_str(), o.speed * 100);
   std::fflush(stdout);
   const int status = replay(o, program, [&](Executor& executor, const ExecutorOptions& options) {
-    return executor.run(stream, program, options);
+    return executor.run(stream, io.get(), program, options);
   });
   if (krc) krc->stop();
   link.stop();

@@ -449,7 +449,7 @@ void TestProgramGui::listEditing() {
   click(QStringLiteral("program.applyLogic"));
   QCOMPARE(panel_->program().instructions[2].type, InstructionType::kWaitDi);
   QCOMPARE(panel_->program().instructions[2].timeout_ms, 1500);
-  QCOMPARE(panel_->program().instructions[2].signal, xmate::teach::diIndex("DI1_0"));
+  QCOMPARE(panel_->program().instructions[2].signal, xmate::teach::diIndex(xmate::model::RobotFamily::kXmate, "DI1_0"));
   QVERIFY(!panel_->program().instructions[2].value);
   QCOMPARE(rows(), 5);
   // The type can change too: WAIT_DI becomes a WAIT of 250 ms.

@@ -98,7 +98,7 @@ void TestJointStream::limitsComeFromTheContext() {
     axisCorrectionLimits(parseContext(bad, "cell.rsi.xml"));
     QFAIL("a limit that is not a number was accepted");
   } catch (const ConfigError& e) {
-    QVERIFY2(QString(e.what()).startsWith("cell.rsi.xml:2: AXISCORR1's UpperLimA3 = \"ninety\" is not a number"), e.what());
+    QVERIFY2(QString(e.what()).startsWith("cell.rsi.xml:2: AXISCORR1 (AXISCORR): parameter UpperLimA3=\"ninety\" is not a number"), e.what());
   }
 }
 

@@ -119,7 +119,7 @@ void TestRciCliRsi::stateAnswersEveryRobAndPrintsItsValues() {
     QVERIFY2(!sen.empty(), "no answer from rci-cli");
     QCOMPARE(QString::fromStdString(sen),
              QString("<Sen Type=\"ImFree\"><EStr></EStr><AK A1=\"0.0000\" A2=\"0.0000\" A3=\"0.0000\" A4=\"0.0000\" "
-                     "A5=\"0.0000\" A6=\"0.0000\" /><Stop>0</Stop><IPOC>%1</IPOC></Sen>")
+                     "A5=\"0.0000\" A6=\"0.0000\" /><Stop>0</Stop><Digout o1=\"0\" o2=\"0\" o3=\"0\" o4=\"0\" o5=\"0\" o6=\"0\" o7=\"0\" o8=\"0\" /><IPOC>%1</IPOC></Sen>")
                  .arg(ipoc));
     std::this_thread::sleep_for(std::chrono::milliseconds(4));
   }
@@ -221,7 +221,7 @@ void TestRciCliRsi::benchRsiPrintsItsTable() {
   const QString out = cli.readAllStandardOutput();
   QVERIFY2(cli.exitCode() == 0, qPrintable(out + cli.readAllStandardError()));
   QVERIFY2(QRegularExpression("^rci-cli bench rsi: 200 cycles, one thread, loopback; 1000 generated <Rob> datagrams of "
-                              "\\d+-\\d+ bytes \\(39 values\\) for the sample config, <Sen> of \\d+ bytes\n")
+                              "\\d+-\\d+ bytes \\(47 values\\) for the sample config, <Sen> of \\d+ bytes\n")
                .match(out)
                .hasMatch(),
            qPrintable(out));
@@ -235,7 +235,7 @@ void TestRciCliRsi::benchRsiPrintsItsTable() {
                .match(out)
                .hasMatch(),
            qPrintable(out));
-  QVERIFY2(out.contains("agreement: both parsers read the same 39 values and IPOC from all 1000 datagrams; "),
+  QVERIFY2(out.contains("agreement: both parsers read the same 47 values and IPOC from all 1000 datagrams; "),
            qPrintable(out));
 }
 

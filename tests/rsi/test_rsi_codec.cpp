@@ -56,7 +56,7 @@ class TestRsiCodec : public QObject {
 
 void TestRsiCodec::robIsReadIntoItsSlots() {
   RobDecoder d(sampleConfig());
-  QCOMPARE(int(d.layout().size()), 6 + 6 + 6 + 6 + 6 + 1 + 6 + 2);
+  QCOMPARE(int(d.layout().size()), 6 + 6 + 6 + 6 + 6 + 1 + 6 + 2 + 8);
   QVERIFY2(d.decode(robDatagram("18446744073709551615", "TYPE")), d.reason());
   QCOMPARE(d.ipoc(), uint64_t(18446744073709551615ull));
   QCOMPARE(d.ipocText(), std::string_view("18446744073709551615"));
@@ -170,7 +170,7 @@ void TestRsiCodec::senCarriesTheReceiveElements() {
   const std::string sen(out, n);
   QCOMPARE(sen, std::string("<Sen Type=\"ImFree\"><EStr>J3 &gt; limit &amp; &quot;stop&quot;</EStr>"
                             "<AK A1=\"-0.5000\" A2=\"0.0000\" A3=\"0.5000\" A4=\"1.0000\" A5=\"1.5000\" A6=\"2.0000\" />"
-                            "<Stop>1</Stop><IPOC>18446744073709551615</IPOC></Sen>"));
+                            "<Stop>1</Stop><Digout o1=\"0\" o2=\"0\" o3=\"0\" o4=\"0\" o5=\"0\" o6=\"0\" o7=\"0\" o8=\"0\" /><IPOC>18446744073709551615</IPOC></Sen>"));
   // Well-formed, with the text back as it was set.
   const XmlElement parsed = parseXml(sen, "sen");
   QCOMPARE(parsed.child("EStr")->text, std::string("J3 > limit & \"stop\""));

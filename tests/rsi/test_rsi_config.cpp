@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rsi/config.h"
+#include "rsi/digital_io.h"
 
 using namespace xmate::rsi;
 
@@ -44,6 +45,7 @@ class TestRsiConfig : public QObject {
   void badEthernetConfigsAreNamed();
   void badContextsAreNamed_data();
   void badContextsAreNamed();
+  void digitalSignalsFollowTheWiring();
 };
 
 void TestRsiConfig::samplesReadBack() {
@@ -69,7 +71,7 @@ void TestRsiConfig::samplesReadBack() {
   QCOMPARE(config.port, uint16_t(49152));
   QCOMPARE(config.sentype, std::string("ImFree"));
   QVERIFY(!config.only_send);
-  QCOMPARE(int(config.send.size()), 14);
+  QCOMPARE(int(config.send.size()), 22);
   QCOMPARE(config.send[0].element, std::string("RIst"));
   QVERIFY(config.send[0].internal() && config.send[0].attribute.empty());
   QCOMPARE(config.send[5].element, std::string("Delay"));
@@ -77,7 +79,7 @@ void TestRsiConfig::samplesReadBack() {
   QCOMPARE(config.send[6].element, std::string("GearTorque"));
   QCOMPARE(config.send[6].attribute, std::string("A1"));
   QCOMPARE(config.send[6].index, 1);
-  QCOMPARE(int(config.receive.size()), 8);
+  QCOMPARE(int(config.receive.size()), 16);
   QCOMPARE(config.receive[0].element, std::string("EStr"));
   QCOMPARE(config.receive[1].tag, std::string("AK.A1"));
   QVERIFY(config.receive[1].hold_on);
@@ -192,6 +194,54 @@ void TestRsiConfig::badContextsAreNamed() {
   const QString error = text.isEmpty() ? errorOf([] { readContext("/nonexistent/ctx.rsi.xml"); })
                                        : errorOf([&] { parseContext(text.toStdString(), "ctx.rsi.xml"); });
   QVERIFY2(error.contains(expected), qPrintable(error));
+}
+
+// Which $IN / $OUT the PC reaches: DIGIN outputs wired into the ETHERNET object's inputs (SEND
+// elements), ETHERNET outputs (RECEIVE elements) wired into DIGOUT inputs, numbered from Index.
+void TestRsiConfig::digitalSignalsFollowTheWiring() {
+  const Context replay = readContext(sample("rci_replay.rsi.xml"));
+  const DigitalIoMap map = digitalIoMap(replay, readEthernetConfig(replay.ethernetConfigPath()));
+  QCOMPARE(int(map.inputs.size()), 8);
+  QCOMPARE(int(map.outputs.size()), 8);
+  QCOMPARE(map.input(3)->tag, std::string("Digin.i3"));
+  QCOMPARE(map.input(3)->object, std::string("DIGIN1"));
+  QCOMPARE(map.output(8)->element, std::string("Digout"));
+  QCOMPARE(map.output(8)->attribute, std::string("o8"));
+  QVERIFY(!map.input(9) && !map.output(0));
+  // The sample without DIGIN/DIGOUT wires none.
+  const Context plain = readContext(sample("rci_axis_corr.rsi.xml"));
+  const DigitalIoMap none = digitalIoMap(plain, readEthernetConfig(plain.ethernetConfigPath()));
+  QVERIFY(none.inputs.empty() && none.outputs.empty());
+
+  // Index moves the numbers; a wire to a channel the config lacks is left out.
+  const EthernetConfig config = parseEthernetConfig(
+      configWith(kConfig, "<ELEMENT TAG=\"In.a\" TYPE=\"BOOL\" INDX=\"1\"/>\n<ELEMENT TAG=\"In.b\" TYPE=\"BOOL\" INDX=\"2\"/>\n",
+                 "<ELEMENT TAG=\"Out\" TYPE=\"BOOL\" INDX=\"3\"/>\n"),
+      "io.xml");
+  auto context = [](const std::string& index) {
+    return "<RSIObjects>\n"
+           "<RSIObject ObjType=\"DIGIN\" ObjID=\"DI\"><Parameters><Parameter Name=\"Index\" ParamValue=\"" +
+           index +
+           "\"/></Parameters></RSIObject>\n"
+           "<RSIObject ObjType=\"ETHERNET\" ObjID=\"E\"><Inputs><Input InIdx=\"1\" OutObjID=\"DI\" OutIdx=\"2\"/>"
+           "<Input InIdx=\"5\" OutObjID=\"DI\" OutIdx=\"1\"/></Inputs><Parameters><Parameter Name=\"ConfigFile\" "
+           "ParamValue=\"io.xml\"/></Parameters></RSIObject>\n"
+           "<RSIObject ObjType=\"DIGOUT\" ObjID=\"DO\"><Inputs><Input InIdx=\"4\" OutObjID=\"E\" OutIdx=\"3\"/>"
+           "</Inputs><Parameters><Parameter Name=\"Index\" ParamValue=\"" +
+           index + "\"/></Parameters></RSIObject>\n</RSIObjects>\n";
+  };
+  const DigitalIoMap moved = digitalIoMap(parseContext(context("17"), "io.rsi.xml"), config);
+  QCOMPARE(int(moved.inputs.size()), 1);  // InIdx 5 has no SEND element: left out
+  QCOMPARE(moved.inputs[0].signal, 18);   // DIGIN output 2 from Index 17
+  QCOMPARE(moved.inputs[0].tag, std::string("In.a"));
+  QCOMPARE(int(moved.outputs.size()), 1);
+  QCOMPARE(moved.outputs[0].signal, 20);  // DIGOUT input 4 from Index 17
+  QCOMPARE(moved.outputs[0].tag, std::string("Out"));
+  QCOMPARE(errorOf([&] { digitalIoMap(parseContext(context("2.5"), "io.rsi.xml"), config); }),
+           QStringLiteral("io.rsi.xml:2: DI (DIGIN): Index 2.5 is not an input/output number; give the first one, from 1"));
+  QCOMPARE(errorOf([&] { digitalIoMap(parseContext(context("one"), "io.rsi.xml"), config); }),
+           QStringLiteral("io.rsi.xml:2: DI (DIGIN): parameter Index=\"one\" is not a number; give a decimal number such as "
+                          "5 or -2.5"));
 }
 
 QTEST_MAIN(TestRsiConfig)

@@ -73,5 +73,5 @@ status=$?
 kill "$sim_pid" 2>/dev/null
 wait "$sim_pid" 2>/dev/null
 [ $status -eq 0 ] || fail "run against rci-sim --rsi exited $status: $out; rci-sim: $(cat "$work/rci_sim_rsi.log")"
-echo "$out" | grep -q '^finished: 5 instructions' || fail "the run against rci-sim --rsi did not finish: $out"
+echo "$out" | grep -q '^finished: 7 instructions' || fail "the run against rci-sim --rsi did not finish: $out"
 echo "11 passed, 0 failed"

@@ -13,6 +13,7 @@
 
 #include "model/arm_kinematics.h"
 #include "model/robot_spec.h"
+#include "rsi/digital_io.h"
 #include "rsi/joint_stream.h"
 #include "rsi/link.h"
 #include "sim/krc_server.h"
@@ -37,6 +38,7 @@ struct Cell {
   rsi::EthernetConfig config;
   std::unique_ptr<rsi::Link> link;
   std::unique_ptr<rsi::JointStream> stream;
+  std::unique_ptr<rsi::DigitalIo> io;  // as rci-cli run: when the context wires any
   std::unique_ptr<sim::KrcServer> krc;
 
   explicit Cell(const std::string& context) {
@@ -49,6 +51,8 @@ struct Cell {
     options.silence_ms = 200;
     link = std::make_unique<rsi::Link>(config, options);
     stream = std::make_unique<rsi::JointStream>(*link, kr6(), rsi::axisCorrectionLimits(c));
+    rsi::DigitalIoMap map = rsi::digitalIoMap(c, config);
+    if (!map.inputs.empty() || !map.outputs.empty()) io = std::make_unique<rsi::DigitalIo>(*link, std::move(map));
     link->start();
     sim::KrcServerConfig k;
     k.krc.context_path = dataPath(context);
@@ -131,6 +135,8 @@ class TestExecutorRsi : public QObject {
   void beyondTheCorrectionLimitIsRefusedBeforeMoving();
   void rsiGoingOffFailsTheMotion();
   void stopBrakesAndEndsTheRun();
+  void digitalSignalsGoThroughTheContext();
+  void withoutWiredSignalsSetDoSaysSo();
 };
 
 void TestExecutorRsi::programReachesItsTargets() {
@@ -147,7 +153,7 @@ void TestExecutorRsi::programReachesItsTargets() {
   p.instructions.push_back(moveJ(jointsTarget(home), 1.0, "home"));
 
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
   QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
   const std::array<std::array<double, 7>, 4> expected{j1, l2, c3, home};
   for (size_t i = 0; i < expected.size(); ++i) {
@@ -170,7 +176,7 @@ void TestExecutorRsi::beyondTheCorrectionLimitIsRefusedBeforeMoving() {
   p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 0, 0})), 0.5, "near"));
   p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 12, 0})), 0.5, "far"));
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
   QCOMPARE(report.outcome, RunState::kFailed);
   QCOMPARE(report.failed_instruction, 1L);
   const QString message = QString::fromStdString(report.message);
@@ -191,7 +197,7 @@ void TestExecutorRsi::rsiGoingOffFailsTheMotion() {
     waitForFraction(executor, 0.2);
     cell.krc->krc().suspendSending(3000);  // RSI off without a timeout, e.g. the KRL program ended
   });
-  const RunReport report = executor.run(*cell.stream, p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
   operator_thread.join();
   QCOMPARE(report.outcome, RunState::kFailed);
   QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 1 (MOVEJ \"slow\"): RSI stopped during the motion"),
@@ -210,7 +216,7 @@ void TestExecutorRsi::stopBrakesAndEndsTheRun() {
     waitForFraction(executor, 0.3);
     executor.stop();
   });
-  const RunReport report = executor.run(*cell.stream, p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
   operator_thread.join();
   QVERIFY2(report.outcome == RunState::kStopped, report.message.c_str());
   QCOMPARE(report.instructions[0].status, InstructionStatus::kStopped);
@@ -219,6 +225,60 @@ void TestExecutorRsi::stopBrakesAndEndsTheRun() {
   const double a1 = cell.actual()[0] - home[0];
   QVERIFY2(a1 > 0.3 * 80 * kDeg && a1 < 80 * kDeg - 1e-3, qPrintable(QString::number(a1 / kDeg)));
   QVERIFY(report.instructions[0].settled);
+}
+
+// SET_DO sets the KRC's $OUT through DIGOUT1, WAIT_DI waits for $IN through DIGIN1, and a signal
+// the context does not wire fails its instruction naming the ones it does.
+void TestExecutorRsi::digitalSignalsGoThroughTheContext() {
+  Cell cell("resources/rsi/rci_replay.rsi.xml");
+  Program p = kukaProgram();
+  Instruction on;
+  on.type = InstructionType::kSetDo;
+  on.signal = 3;
+  on.value = true;
+  Instruction wait;
+  wait.type = InstructionType::kWaitDi;
+  wait.signal = 2;
+  wait.value = true;
+  wait.timeout_ms = 10000;
+  Instruction unwired = on;
+  unwired.signal = 20;
+  p.instructions = {on, wait, unwired};
+  Executor executor;
+  std::thread operator_thread([&] {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (executor.progress().instruction < 1 && std::chrono::steady_clock::now() < end)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));  // it is waiting now
+    cell.krc->krc().setDigitalInput(2, true);
+  });
+  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  operator_thread.join();
+  QCOMPARE(report.instructions[0].status, InstructionStatus::kDone);
+  QCOMPARE(report.instructions[1].status, InstructionStatus::kDone);
+  QVERIFY2(report.instructions[1].duration >= 0.1, qPrintable(QString::number(report.instructions[1].duration)));
+  QVERIFY(cell.krc->krc().status().digout & (1u << 2));  // $OUT[3]
+  QCOMPARE(report.outcome, RunState::kFailed);
+  QCOMPARE(report.failed_instruction, 2L);
+  QVERIFY2(QString::fromStdString(report.message)
+               .contains("$OUT[20] is not wired to the PC in the RSI context (wired to the PC: $OUT[1], $OUT[2]"),
+           report.message.c_str());
+}
+
+void TestExecutorRsi::withoutWiredSignalsSetDoSaysSo() {
+  Cell cell("resources/rsi/rci_axis_corr.rsi.xml");  // no DIGIN / DIGOUT
+  QVERIFY(!cell.io);
+  Program p = kukaProgram();
+  Instruction on;
+  on.type = InstructionType::kSetDo;
+  on.signal = 1;
+  on.value = true;
+  p.instructions = {on};
+  Executor executor;
+  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  QCOMPARE(report.outcome, RunState::kFailed);
+  QVERIFY2(QString::fromStdString(report.message).contains("the RSI context wires no digital inputs or outputs to the PC"),
+           report.message.c_str());
 }
 
 QTEST_GUILESS_MAIN(TestExecutorRsi)

@@ -120,6 +120,7 @@ class TestProgram : public QObject {
   void programRoundTripsThroughAFile();
   void toolAndLoadRoundTrip();
   void exampleProgramLoads();
+  void kukaSignalsAreNamedAsOnTheController();
   void badFieldsAreNamed_data();
   void badFieldsAreNamed();
   void robotMismatchIsRefused();
@@ -317,6 +318,37 @@ void TestProgram::exampleProgramLoads() {
   QCOMPARE(p.robot, &xmate::model::robotSpec(XMATE7_PRO));
   QCOMPARE(p.instructions.size(), size_t(7));
   QCOMPARE(p.instructions[2].type, InstructionType::kMoveC);
+}
+
+// A KUKA program names its IO as the controller does, $OUT[n] / $IN[n]; the xMate's names are not
+// its signals, nor are numbers outside 1..4096 or written with a leading zero.
+void TestProgram::kukaSignalsAreNamedAsOnTheController() {
+  const Program example = loadProgram(dataDir() + "/resources/programs/kr6_example.json");
+  QCOMPARE(example.instructions[1].type, InstructionType::kSetDo);
+  QCOMPARE(example.instructions[1].signal, 1);
+  auto kukaWith = [](const std::string& instruction) {
+    return R"({"format": "rci-program", "version": 2, "robot": "kr6_r900_sixx", "instructions": [)" + instruction +
+           "]}";
+  };
+  const Program p = parseProgram(kukaWith(R"({"type": "SET_DO", "signal": "$OUT[4096]", "value": true},
+      {"type": "WAIT_DI", "signal": "$IN[12]", "value": false, "timeout_ms": 500})"));
+  QCOMPARE(p.instructions[0].signal, 4096);
+  QCOMPARE(p.instructions[1].signal, 12);
+  const std::string text = programText(p);
+  QVERIFY(text.find(R"("signal": "$OUT[4096]")") != std::string::npos);
+  QVERIFY(text.find(R"("signal": "$IN[12]")") != std::string::npos);
+  QCOMPARE(parseProgram(text).instructions[1].signal, 12);
+  for (const char* bad : {"DO0_0", "$OUT[0]", "$OUT[4097]", "$OUT[07]", "$OUT[]", "$OUT[1", "$IN[3]", "OUT[3]"}) {
+    try {
+      parseProgram(kukaWith(std::string(R"({"type": "SET_DO", "value": true, "signal": ")") + bad + "\"}"));
+      QFAIL(bad);
+    } catch (const ProgramError& e) {
+      QCOMPARE(QString::fromUtf8(e.what()),
+               QString("instruction 1 (SET_DO), field \"signal\": unknown signal \"%1\" for the KR 6 R900 sixx "
+                       "(known: $OUT[1] to $OUT[4096])")
+                   .arg(bad));
+    }
+  }
 }
 
 void TestProgram::badFieldsAreNamed_data() {

@@ -143,7 +143,8 @@ QString ProgramModel::nextName() const {
   }
 }
 
-QString ProgramModel::details(const Instruction& in) {
+QString ProgramModel::details(const Instruction& in) const {
+  const xmate::model::RobotFamily family = program_.robot->family;
   switch (in.type) {
     case InstructionType::kMoveJ:
     case InstructionType::kMoveL:
@@ -153,11 +154,11 @@ QString ProgramModel::details(const Instruction& in) {
     case InstructionType::kWait:
       return QStringLiteral("wait %1 ms").arg(in.ms);
     case InstructionType::kSetDo:
-      return QStringLiteral("%1 = %2").arg(QLatin1String(xmate::teach::doName(in.signal)),
+      return QStringLiteral("%1 = %2").arg(QString::fromStdString(xmate::teach::doName(family, in.signal)),
                                            in.value ? QStringLiteral("on") : QStringLiteral("off"));
     case InstructionType::kWaitDi:
       return QStringLiteral("until %1 = %2, timeout %3 ms")
-          .arg(QLatin1String(xmate::teach::diName(in.signal)), in.value ? QStringLiteral("on") : QStringLiteral("off"))
+          .arg(QString::fromStdString(xmate::teach::diName(family, in.signal)), in.value ? QStringLiteral("on") : QStringLiteral("off"))
           .arg(in.timeout_ms);
   }
   return {};

@@ -44,7 +44,7 @@ class ProgramModel : public QAbstractTableModel {
   // "P<n>" with the smallest n not used by a name yet.
   QString nextName() const;
   // One line describing an instruction: its targets or its parameters.
-  static QString details(const xmate::teach::Instruction& in);
+  QString details(const xmate::teach::Instruction& in) const;  // signals named as on the program's robot
 
   // QAbstractTableModel
   int rowCount(const QModelIndex& parent = {}) const override;

@@ -191,8 +191,8 @@ QWidget* ProgramPanel::buildTeachGroup() {
   di_trigger_ = new QComboBox(group);
   di_trigger_->setObjectName(QStringLiteral("program.diTrigger"));
   di_trigger_->addItem(tr("Off"), -1);
-  for (int i = 0; i < xmate::teach::kSignalCount; ++i)
-    di_trigger_->addItem(QLatin1String(xmate::teach::diName(i)), i);
+  for (int i = 0; i < xmate::teach::kXmateSignalCount; ++i)
+    di_trigger_->addItem(QString::fromStdString(xmate::teach::diName(xmate::model::RobotFamily::kXmate, i)), i);
   di_trigger_->setToolTip(tr("Record a waypoint on each rising edge of this digital input (e.g. a button on the "
                              "tool)"));
   record_state_ = new QLabel(tr("Hand-guide the arm (Drag panel), then record."), group);
@@ -540,7 +540,7 @@ void ProgramPanel::note(const QString& text, bool error, const QString& path) {
 void ProgramPanel::resetDiTrigger() {
   // The level now is the reference: only a later rising edge records.
   const int di = di_trigger_->currentData().toInt();
-  di_known_ = haveLiveState() && di >= 0 && di < xmate::teach::kSignalCount;
+  di_known_ = haveLiveState() && di >= 0 && di < xmate::teach::kXmateSignalCount;
   if (di_known_) last_di_ = session().live().digital_in[size_t(di)];
 }
 
@@ -554,10 +554,14 @@ void ProgramPanel::logicTypeChanged() {
   const auto type = InstructionType(logic_type_->currentData().toInt());
   const int keep = logic_signal_->currentIndex();
   logic_signal_->clear();
+  // The xMate's six signals; on a KUKA the first 64 of $OUT / $IN.
+  const xmate::model::RobotFamily family = model_->program().robot->family;
+  const int first = family == xmate::model::RobotFamily::kKuka ? 1 : 0;
+  const int count = family == xmate::model::RobotFamily::kKuka ? 64 : xmate::teach::kXmateSignalCount;
   if (type != InstructionType::kWait)
-    for (int i = 0; i < xmate::teach::kSignalCount; ++i)
-      logic_signal_->addItem(QLatin1String(type == InstructionType::kSetDo ? xmate::teach::doName(i)
-                                                                            : xmate::teach::diName(i)),
+    for (int i = first; i < first + count; ++i)
+      logic_signal_->addItem(QString::fromStdString(type == InstructionType::kSetDo ? xmate::teach::doName(family, i)
+                                                                                     : xmate::teach::diName(family, i)),
                              i);
   if (keep >= 0 && keep < logic_signal_->count()) logic_signal_->setCurrentIndex(keep);
   logic_signal_->setEnabled(type != InstructionType::kWait);
@@ -605,7 +609,7 @@ void ProgramPanel::applyLogic() {
   if (running_ || row < 0 || xmate::teach::isMotion(model_->instruction(row).type)) return;
   Instruction in;
   if (!logicFromEditor(size_t(row), in) || !model_->replaceLogic(row, in)) return;
-  showStatus(tr("Instruction %1 is now %2.").arg(row + 1).arg(ProgramModel::details(model_->instruction(row))), false);
+  showStatus(tr("Instruction %1 is now %2.").arg(row + 1).arg(model_->details(model_->instruction(row))), false);
 }
 
 void ProgramPanel::showSelectedLogic() {

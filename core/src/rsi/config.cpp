@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -195,6 +196,20 @@ const std::string* Object::parameter(std::string_view name) const {
   for (const Parameter& p : parameters)
     if (p.name == name) return &p.value;
   return nullptr;
+}
+
+double numberParameter(const Context& context, const Object& object, std::string_view name, double fallback) {
+  const std::string* text = object.parameter(name);
+  if (!text) return fallback;
+  double v = 0;
+  std::string_view t = *text;
+  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v))
+    throw ConfigError(context.path + ":" + std::to_string(object.line) + ": " + object.id + " (" + object.type +
+                      "): parameter " + std::string(name) + "=\"" + *text +
+                      "\" is not a number; give a decimal number such as 5 or -2.5");
+  return v;
 }
 
 const Object* Context::find(std::string_view object_id) const {

@@ -91,6 +91,11 @@ struct Context {
   std::string ethernetConfigPath() const;
 };
 
+// The number in an object's parameter `name` (a decimal in the C locale's forms, "+5", "-2.5"), or
+// `fallback` when the object does not have it. Throws ConfigError "FILE:LINE: OBJID (TYPE):
+// parameter NAME="..." is not a number; ..." when it is there but not a finite number.
+double numberParameter(const Context& context, const Object& object, std::string_view name, double fallback);
+
 // Throws ConfigError: an object without ObjType or ObjID, an ObjID twice, an input wired to an
 // object that does not exist or with a non-positive index, no ETHERNET object, an ETHERNET object
 // without ConfigFile.

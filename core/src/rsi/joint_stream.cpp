@@ -16,17 +16,6 @@ namespace {
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 constexpr double kKukaDefaultLimitDeg = 5.0;  // AXISCORR's limits when the context does not set them
 
-double limitParameter(const Context& context, const Object& object, const std::string& name, double fallback) {
-  const std::string* text = object.parameter(name);
-  if (!text) return fallback;
-  char* end = nullptr;
-  const double value = std::strtod(text->c_str(), &end);
-  if (text->empty() || *end != '\0' || !std::isfinite(value))
-    throw ConfigError(context.path + ":" + std::to_string(object.line) + ": " + object.id + "'s " + name + " = \"" +
-                      *text + "\" is not a number; give the limit in degrees, e.g. 90");
-  return value;
-}
-
 std::string fmt(const char* format, double a, double b = 0, double c = 0) {
   char buffer[160];
   std::snprintf(buffer, sizeof buffer, format, a, b, c);
@@ -48,12 +37,12 @@ AxisCorrectionLimits axisCorrectionLimits(const Context& context) {
   AxisCorrectionLimits limits;
   for (size_t i = 0; i < 6; ++i) {
     const std::string axis = "A" + std::to_string(i + 1);
-    limits.lower[i] = limitParameter(context, *corr, "LowerLim" + axis, -kKukaDefaultLimitDeg) / kDeg;
-    limits.upper[i] = limitParameter(context, *corr, "UpperLim" + axis, kKukaDefaultLimitDeg) / kDeg;
+    limits.lower[i] = numberParameter(context, *corr, "LowerLim" + axis, -kKukaDefaultLimitDeg) / kDeg;
+    limits.upper[i] = numberParameter(context, *corr, "UpperLim" + axis, kKukaDefaultLimitDeg) / kDeg;
     limits.lower_by[i] = corr->id + "'s LowerLim" + axis;
     limits.upper_by[i] = corr->id + "'s UpperLim" + axis;
     if (!monitor || !monitor->parameter("Max" + axis)) continue;
-    const double max = std::abs(limitParameter(context, *monitor, "Max" + axis, 0)) / kDeg;
+    const double max = std::abs(numberParameter(context, *monitor, "Max" + axis, 0)) / kDeg;
     if (max < limits.upper[i]) {
       limits.upper[i] = max;
       limits.upper_by[i] = monitor->id + "'s Max" + axis;

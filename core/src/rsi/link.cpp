@@ -2,7 +2,9 @@
 // rsi::Link (link.h): the receive -> decode -> callback -> encode -> send loop on its own thread.
 #include "rsi/link.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "net/clock.h"
 
@@ -71,7 +73,25 @@ void Link::newSession() {
   last_total_ = {};
 }
 
+void Link::setReceiveValue(int slot, double value) {
+  if (slot < 0 || size_t(slot) >= encoder_.layout().size() || size_t(slot) >= kMaxSlots)
+    throw std::out_of_range("rsi::Link::setReceiveValue: slot " + std::to_string(slot) +
+                            " is not a RECEIVE element of " + config_.path);
+  receive_values_[size_t(slot)].value.store(value, std::memory_order_relaxed);
+  receive_values_[size_t(slot)].set.store(true, std::memory_order_release);
+  receive_pending_.store(true, std::memory_order_release);
+}
+
+void Link::takeReceiveValues() {
+  if (!receive_pending_.exchange(false, std::memory_order_acq_rel)) return;
+  const size_t n = std::min(encoder_.layout().size(), kMaxSlots);
+  for (size_t i = 0; i < n; ++i)
+    if (receive_values_[i].set.exchange(false, std::memory_order_acq_rel))
+      encoder_.set(int(i), receive_values_[i].value.load(std::memory_order_relaxed));
+}
+
 void Link::answer(const net::Endpoint& to, int64_t received_ns) {
+  takeReceiveValues();
   const Correction c = callback_ ? callback_(decoder_) : Correction{};
   if (c.kind != Correction::Kind::kNone) {
     const auto& slots = c.kind == Correction::Kind::kAxis ? axis_slots_ : cartesian_slots_;

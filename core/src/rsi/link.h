@@ -95,10 +95,19 @@ class Link {
   uint32_t callbackSession() const { return session_; }
   // The decoder's slot of a SEND value (set-up), for RobSample::values and the callback.
   int slot(std::string_view element, std::string_view attribute = {}) const { return decoder_.slot(element, attribute); }
+  // The encoder's slot of a RECEIVE value (set-up; -1 if the config has none), for setReceiveValue.
+  int receiveSlot(std::string_view element, std::string_view attribute = {}) const {
+    return encoder_.slot(element, attribute);
+  }
+  // Any thread, lock-free: a RECEIVE value that is not a correction (a digital output, Stop, a value
+  // of your own) in every answer from the next one on. A correction from the callback overrides it.
+  // Throws std::out_of_range for a slot the config does not have.
+  void setReceiveValue(int slot, double value);
 
  private:
   void run();
   void answer(const net::Endpoint& to, int64_t received_ns);
+  void takeReceiveValues();  // the link's thread: setReceiveValue's values into the encoder
   void newSession();
 
   const EthernetConfig config_;
@@ -119,6 +128,13 @@ class Link {
   net::Seqlock<LinkCounters> counters_;
   LinkCounters counting_;  // the thread's own copy, published after every datagram
   uint32_t session_ = 0;
+  // setReceiveValue's values, taken into the encoder by the link's thread when `pending` is up.
+  struct ReceiveValue {
+    std::atomic<double> value{0};
+    std::atomic<bool> set{false};
+  };
+  std::array<ReceiveValue, kMaxSlots> receive_values_{};
+  std::atomic<bool> receive_pending_{false};
   net::RealtimeStatus status_;
   std::atomic<bool> status_ready_{false};
 };

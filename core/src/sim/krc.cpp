@@ -4,7 +4,6 @@
 #include "sim/krc.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -35,19 +34,6 @@ std::string lower(std::string s) {
   return s;
 }
 
-// A numeric parameter, or `fallback` when the object does not have it.
-double number(const rsi::Context& c, const rsi::Object& o, const std::string& name, double fallback) {
-  const std::string* text = o.parameter(name);
-  if (!text) return fallback;
-  double v = 0;
-  std::string_view t = *text;
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v))
-    fail(c, o, "parameter " + name + "=\"" + *text + "\" is not a number; give a decimal number such as 5 or -2.5");
-  return v;
-}
-
 const char* const kAxes[6] = {"A1", "A2", "A3", "A4", "A5", "A6"};
 const char* const kCartesian[3] = {"X", "Y", "Z"};
 
@@ -63,20 +49,20 @@ void readParameters(const rsi::Context& c, Node& n) {
       break;
     case ObjKind::kAxisCorr:
       for (int k = 0; k < 6; ++k) {
-        n.lower[size_t(k)] = number(c, o, std::string("LowerLim") + kAxes[k], -5);
-        n.upper[size_t(k)] = number(c, o, std::string("UpperLim") + kAxes[k], 5);
+        n.lower[size_t(k)] = rsi::numberParameter(c, o, std::string("LowerLim") + kAxes[k], -5);
+        n.upper[size_t(k)] = rsi::numberParameter(c, o, std::string("UpperLim") + kAxes[k], 5);
         if (n.lower[size_t(k)] > n.upper[size_t(k)])
           fail(c, o, std::string("LowerLim") + kAxes[k] + " is above UpperLim" + kAxes[k] + "; swap them");
       }
       break;
     case ObjKind::kPosCorr: {
       for (int k = 0; k < 3; ++k) {
-        n.lower[size_t(k)] = number(c, o, std::string("LowerLim") + kCartesian[k], -5);
-        n.upper[size_t(k)] = number(c, o, std::string("UpperLim") + kCartesian[k], 5);
+        n.lower[size_t(k)] = rsi::numberParameter(c, o, std::string("LowerLim") + kCartesian[k], -5);
+        n.upper[size_t(k)] = rsi::numberParameter(c, o, std::string("UpperLim") + kCartesian[k], 5);
         if (n.lower[size_t(k)] > n.upper[size_t(k)])
           fail(c, o, std::string("LowerLim") + kCartesian[k] + " is above UpperLim" + kCartesian[k] + "; swap them");
       }
-      n.max_rot = number(c, o, "MaxRotAngle", 5);
+      n.max_rot = rsi::numberParameter(c, o, "MaxRotAngle", 5);
       if (n.max_rot < 0) fail(c, o, "MaxRotAngle is negative; give the largest rotation in degrees");
       const std::string* frame = o.parameter("RefCorrSys");
       const std::string f = frame ? lower(*frame) : "base";
@@ -89,26 +75,26 @@ void readParameters(const rsi::Context& c, Node& n) {
       break;
     }
     case ObjKind::kAxisCorrMon:
-      for (int k = 0; k < 6; ++k) n.max[size_t(k)] = number(c, o, std::string("Max") + kAxes[k], kNaN);
+      for (int k = 0; k < 6; ++k) n.max[size_t(k)] = rsi::numberParameter(c, o, std::string("Max") + kAxes[k], kNaN);
       break;
     case ObjKind::kPosCorrMon:
-      n.max_trans = number(c, o, "MaxTrans", kNaN);
-      n.max_rot = number(c, o, "MaxRotAngle", kNaN);
+      n.max_trans = rsi::numberParameter(c, o, "MaxTrans", kNaN);
+      n.max_rot = rsi::numberParameter(c, o, "MaxRotAngle", kNaN);
       break;
     case ObjKind::kDigIn:
     case ObjKind::kDigOut: {
-      const double index = number(c, o, "Index", 1);
+      const double index = rsi::numberParameter(c, o, "Index", 1);
       if (index < 1 || index > 64 - 16 + 1 || index != std::floor(index))
         fail(c, o, "Index " + std::to_string(index) + " is not a first input/output 1 to 49 (16 bits from it)");
       n.first_bit = int(index) - 1;
       break;
     }
     case ObjKind::kSource:
-      n.source_type = int(number(c, o, "Type", 0));
+      n.source_type = int(rsi::numberParameter(c, o, "Type", 0));
       if (n.source_type != 0 && n.source_type != 1) fail(c, o, "Type must be 0 (constant) or 1 (sine)");
-      n.offset = number(c, o, "Offset", 0);
-      n.amplitude = number(c, o, "Amplitude", 0);
-      n.period = number(c, o, "Period", 1);
+      n.offset = rsi::numberParameter(c, o, "Offset", 0);
+      n.amplitude = rsi::numberParameter(c, o, "Amplitude", 0);
+      n.period = rsi::numberParameter(c, o, "Period", 1);
       if (!(n.period > 0)) fail(c, o, "Period must be positive (seconds)");
       break;
   }
@@ -182,8 +168,8 @@ void Krc::Impl::build() {
     readParameters(context, n);
   }
   const rsi::Object& eth_object = *nodes[size_t(eth)].object;
-  timeout = int(number(context, eth_object, "Timeout", 100));
-  precision = int(number(context, eth_object, "Precision", 4));
+  timeout = int(rsi::numberParameter(context, eth_object, "Timeout", 100));
+  precision = int(rsi::numberParameter(context, eth_object, "Precision", 4));
   if (timeout < 0) fail(context, eth_object, "Timeout is negative; give the number of late answers tolerated, e.g. 100");
   if (precision < 0 || precision > 9) fail(context, eth_object, "Precision must be 0 to 9 decimals");
 

@@ -103,12 +103,17 @@ bool Executor::waitWhilePaused() {
 }
 
 RunReport Executor::run(Robot& robot, const Program& program, const ExecutorOptions& options) {
+  RciPort port(robot);
+  return runOn(port, &robot, nullptr, program, options);
+}
+
+RunReport Executor::runOn(RobotPort& port, Robot* robot, rsi::JointStream* stream, const Program& program,
+                          const ExecutorOptions& options) {
   if (active_.exchange(true)) throw std::logic_error("Executor::run: a program is already running on this executor");
   ActiveGuard guard{active_};
-  RciPort port(robot);
   port_ = &port;
-  robot_ = &robot;
-  stream_ = nullptr;
+  robot_ = robot;
+  stream_ = stream;
   return runProgram(program, options);
 }
 
@@ -260,7 +265,7 @@ void Executor::runWaitDi(const Program& program, size_t index, InstructionReport
     fraction_.store(std::min(1.0, waited / in.timeout_ms));
     if (waited >= in.timeout_ms) {
       r.status = InstructionStatus::kFailed;
-      r.message = describe(program, index) + ": " + diName(in.signal) + " did not become " +
+      r.message = describe(program, index) + ": " + diName(program.robot->family, in.signal) + " did not become " +
                   (in.value ? "true" : "false") + " within " + std::to_string(in.timeout_ms) +
                   " ms; check the sensor and its wiring, or raise timeout_ms";
       return;

@@ -22,6 +22,7 @@
 #include "teach/time_scaling.h"
 
 namespace xmate::rsi {
+class DigitalIo;
 class JointStream;
 }
 
@@ -111,8 +112,11 @@ class Executor {
   // run-time failures (they are in the report); std::logic_error when another run() is active.
   RunReport run(Robot& robot, const Program& program, const ExecutorOptions& options = {});
   // The same on a KUKA over RSI: motions are streamed as axis corrections through `stream`, whose
-  // link is running (executor_rsi.cpp). The options' soft limits and box apply to the pre-flight.
-  RunReport run(rsi::JointStream& stream, const Program& program, const ExecutorOptions& options = {});
+  // link is running (executor_rsi.cpp); SET_DO and WAIT_DI go through `io` (nullptr: the program
+  // fails at the first of them, saying the context wires no IO). The options' soft limits and box
+  // apply to the pre-flight.
+  RunReport run(rsi::JointStream& stream, rsi::DigitalIo* io, const Program& program,
+                const ExecutorOptions& options = {});
 
   // ---- Thread-safe controls (any thread, any time; no effect when not running) ----------------
   void pause();                       // smooth stop on the path; holds until resume()/stop()
@@ -160,6 +164,9 @@ class Executor {
   }
   // Blocks while paused (between instructions); false when stop() ended the wait.
   bool waitWhilePaused();
+  // Both run()s: refuses a second run, binds the robot for this run, and runs the program.
+  RunReport runOn(RobotPort& port, Robot* robot, rsi::JointStream* stream, const Program& program,
+                  const ExecutorOptions& options);
   RunReport runProgram(const Program& program, const ExecutorOptions& options);
   InstructionReport execute(const Program& program, size_t index);
   // The model motions plan with: the program's tool (else the robot's), the soft limits.

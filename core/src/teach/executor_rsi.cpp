@@ -15,6 +15,7 @@
 
 #include "client/move_check.h"
 #include "planning/joint_line.h"
+#include "rsi/digital_io.h"
 #include "rsi/joint_stream.h"
 #include "teach/executor.h"
 #include "teach/plan_scaling.h"
@@ -29,10 +30,12 @@ constexpr double kSettleTolerance = 5e-5;  // rad, as on the xMate (executor_mot
 constexpr int kSettleLimitMs = 1000;
 
 // A KUKA through its RSI stream. Its TCP is the model's at the commanded joints with the program's
-// tool (RSI does not tell the PC which tool the controller has active); it has no digital IO yet.
+// tool (RSI does not tell the PC which tool the controller has active); its digital IO is what the
+// context wires to the PC (rsi::DigitalIo).
 class RsiPort : public RobotPort {
  public:
-  RsiPort(rsi::JointStream& stream, const std::array<double, 16>& tool) : stream_(stream), model_(stream.spec()) {
+  RsiPort(rsi::JointStream& stream, rsi::DigitalIo* io, const std::array<double, 16>& tool)
+      : stream_(stream), io_(io), model_(stream.spec()) {
     model_.SetCoor(tool);
     tool_ = tool;
   }
@@ -48,13 +51,19 @@ class RsiPort : public RobotPort {
     return r;
   }
   std::array<double, 16> toolFrame() override { return tool_; }
-  void setDO(int, bool) override { throw std::runtime_error(kNoIo); }
-  bool getDI(int) override { throw std::runtime_error(kNoIo); }
+  void setDO(int signal, bool value) override { io().setOutput(signal, value); }
+  bool getDI(int signal) override { return io().input(signal); }
 
  private:
-  static constexpr const char* kNoIo =
-      "digital IO over RSI is not supported yet: remove SET_DO and WAIT_DI from programs for a KUKA";
+  rsi::DigitalIo& io() {
+    if (!io_)
+      throw std::runtime_error("the RSI context wires no digital inputs or outputs to the PC: wire DIGIN / DIGOUT "
+                               "objects to the ETHERNET object (as resources/rsi/rci_replay.rsi.xml does), or "
+                               "remove SET_DO and WAIT_DI from the program");
+    return *io_;
+  }
   rsi::JointStream& stream_;
+  rsi::DigitalIo* io_;
   model::ArmKinematics model_;
   std::array<double, 16> tool_{};
 };
@@ -98,17 +107,10 @@ double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6
 
 }  // namespace
 
-RunReport Executor::run(rsi::JointStream& stream, const Program& program, const ExecutorOptions& options) {
-  if (active_.exchange(true)) throw std::logic_error("Executor::run: a program is already running on this executor");
-  struct Guard {
-    std::atomic<bool>& flag;
-    ~Guard() { flag.store(false); }
-  } guard{active_};
-  RsiPort port(stream, program.has_tool ? program.tool : kIdentityPose);
-  port_ = &port;
-  robot_ = nullptr;
-  stream_ = &stream;
-  return runProgram(program, options);
+RunReport Executor::run(rsi::JointStream& stream, rsi::DigitalIo* io, const Program& program,
+                        const ExecutorOptions& options) {
+  RsiPort port(stream, io, program.has_tool ? program.tool : kIdentityPose);
+  return runOn(port, nullptr, &stream, program, options);
 }
 
 void Executor::runRsiMotion(const Program& program, size_t index, InstructionReport& report) {

@@ -135,15 +135,14 @@ InstructionType typeFrom(const Json& v, const Where& w) {
   w.fail("type", "unknown instruction type \"" + name + "\" (known: MOVEJ, MOVEL, MOVEC, WAIT, SET_DO, WAIT_DI)");
 }
 
-int signalFrom(const Json& in, bool output, const Where& w) {
+int signalFrom(const Json& in, bool output, const model::RobotSpec& spec, const Where& w) {
   const Json& v = require(in, "signal", "signal", w);
   if (!v.is_string()) w.fail("signal", "expected a string, " + got(v));
   const std::string& name = v.get_ref<const std::string&>();
-  const int index = output ? doIndex(name) : diIndex(name);
+  const int index = output ? doIndex(spec.family, name) : diIndex(spec.family, name);
   if (index < 0)
-    w.fail("signal", "unknown signal \"" + name + "\" (known: " +
-                         (output ? "DO0_0, DO0_1, DO0_2, DO0_3, DO1_0, DO1_1" : "DI0_0, DI0_1, DI0_2, DI0_3, DI1_0, DI1_1") +
-                         ")");
+    w.fail("signal", "unknown signal \"" + name + "\" for the " + std::string(spec.display_name) +
+                         " (known: " + knownSignals(spec.family, output) + ")");
   return index;
 }
 
@@ -176,12 +175,12 @@ Instruction instructionFrom(const Json& in, size_t index, const model::RobotSpec
       break;
     case InstructionType::kSetDo:
       refuseUnknown(in, {"type", "name", "signal", "value"}, "", w);
-      out.signal = signalFrom(in, true, w);
+      out.signal = signalFrom(in, true, spec, w);
       out.value = boolean(require(in, "value", "value", w), "value", w);
       break;
     case InstructionType::kWaitDi:
       refuseUnknown(in, {"type", "name", "signal", "value", "timeout_ms"}, "", w);
-      out.signal = signalFrom(in, false, w);
+      out.signal = signalFrom(in, false, spec, w);
       out.value = boolean(require(in, "value", "value", w), "value", w);
       out.timeout_ms = integerIn(require(in, "timeout_ms", "timeout_ms", w), "timeout_ms", 1, 3'600'000, w);
       break;
@@ -197,7 +196,7 @@ Json targetToJson(const Target& t) {
   return v;
 }
 
-Json instructionToJson(const Instruction& in) {
+Json instructionToJson(const Instruction& in, model::RobotFamily family) {
   Json v = Json::object();
   v["type"] = typeName(in.type);
   if (!in.name.empty()) v["name"] = in.name;
@@ -214,11 +213,11 @@ Json instructionToJson(const Instruction& in) {
       v["ms"] = in.ms;
       break;
     case InstructionType::kSetDo:
-      v["signal"] = doName(in.signal);
+      v["signal"] = doName(family, in.signal);
       v["value"] = in.value;
       break;
     case InstructionType::kWaitDi:
-      v["signal"] = diName(in.signal);
+      v["signal"] = diName(family, in.signal);
       v["value"] = in.value;
       v["timeout_ms"] = in.timeout_ms;
       break;
@@ -287,7 +286,7 @@ Json programToJson(const Program& program) {
     doc["load"] = std::move(load);
   }
   Json list = Json::array();
-  for (const Instruction& in : program.instructions) list.push_back(instructionToJson(in));
+  for (const Instruction& in : program.instructions) list.push_back(instructionToJson(in, program.robot->family));
   doc["instructions"] = std::move(list);
   return doc;
 }
@@ -316,7 +315,7 @@ Program loadProgram(const std::string& path) {
 void saveProgram(const std::string& path, const Program& program) { writeFileAtomically(path, programText(program)); }
 
 void validateInstruction(const Instruction& instruction, size_t index, const model::RobotSpec& robot) {
-  instructionFrom(instructionToJson(instruction), index, robot);
+  instructionFrom(instructionToJson(instruction, robot.family), index, robot);
 }
 
 void requireRobot(const Program& program, const model::RobotSpec& robot) {
