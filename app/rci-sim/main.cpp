@@ -93,6 +93,8 @@ int runRsi(const rcisim::Options& o, const sigset_t& stop_signals) {
   c.target_ip = o.rsi_target_ip;
   c.target_port = o.rsi_target_port;
   c.realtime = o.realtime;
+  c.lockstep = o.lockstep;
+  c.lockstep_timeout_ms = o.lockstep_timeout_ms;
   c.ft_sensor = ft_sensor.get();
   xmate::sim::KrcServer krc(c);
   krc.krc().setExternalWrench(o.external_wrench);
@@ -107,7 +109,10 @@ int runRsi(const rcisim::Options& o, const sigset_t& stop_signals) {
 
   if (o.print_port) std::cout << krc.port() << '\n';
   std::cout << "rci-sim: " << o.model->display_name << " (KUKA RSI) on " << o.bind_ip << ':' << krc.port()
-            << ", sending <Rob> to " << krc.target() << " every " << o.cycle_ms << " ms, "
+            << ", sending <Rob> to " << krc.target()
+            << (o.lockstep ? " in lock-step (each cycle as soon as its answer is in), cycle "
+                           : " every ")
+            << o.cycle_ms << " ms, "
             << (o.rsi_relative ? "#RELATIVE" : "#ABSOLUTE") << ", Timeout " << krc.krc().timeoutLimit() << ", context "
             << *o.rsi_context << '\n';
   if (control)

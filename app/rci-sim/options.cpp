@@ -63,6 +63,13 @@ CLI::Validator wholeNumber(long min, long max) {
       "");
 }
 
+// A whole-number option from `min` to `max`, shown in the help as `type` ("N", "MS", "P").
+template <class T>
+CLI::Option* addWhole(CLI::App& app, const std::string& name, T& value, const std::string& help, const char* type,
+                      long min, long max) {
+  return app.add_option(name, value, help)->type_name(type)->check(wholeNumber(min, max));
+}
+
 // One of a few words; the message lists them ("takes absolute or relative, got 'x'").
 CLI::Validator oneOf(std::vector<std::string> words, const std::string& listed) {
   return CLI::Validator(
@@ -114,20 +121,18 @@ void describe(CLI::App& app, Options& o, std::string& model, long& control_port,
                  "simulated robot)")
       ->type_name("IP")
       ->check(ipv4Address());
-  app.add_option("--port", o.port, "TCP command port (default 1337; 0 picks a free port)")
-      ->type_name("P")
-      ->check(wholeNumber(0, 65535));
+  addWhole(app, "--port", o.port, "TCP command port (default 1337; 0 picks a free port)", "P", 0, 65535);
   app.add_flag("--print-port", o.print_port, "print the bound TCP port alone on the first line of stdout");
-  app.add_flag("--lockstep", o.lockstep, "lock-step clock: during motion each cycle waits for the client's answer");
-  app.add_option("--lockstep-timeout", o.lockstep_timeout_ms,
-                 "wall time before an unanswered cycle counts as lost (default 200)")
-      ->type_name("MS")
-      ->check(wholeNumber(1, 60000));
-  app.add_option("--control-port", control_port,
-                 "serve the control port (scene events, packet faults; 0 = free port); with --rsi the simulated "
-                 "KRC's (push, DIGIN, override, answer faults, RSI off)")
-      ->type_name("P")
-      ->check(wholeNumber(0, 65535));
+  app.add_flag("--lockstep", o.lockstep,
+               "lock-step clock: during motion each cycle waits for the client's answer (with --rsi: every cycle "
+               "waits for the PC's <Sen>, and the next follows at once)");
+  addWhole(app, "--lockstep-timeout", o.lockstep_timeout_ms,
+           "wall time before an unanswered cycle counts as lost (default 200)",
+           "MS", 1, 60000);
+  addWhole(app, "--control-port", control_port,
+           "serve the control port (scene events, packet faults; 0 = free port); with --rsi the simulated "
+           "KRC's (push, DIGIN, override, answer faults, RSI off)",
+           "P", 0, 65535);
   app.add_option_function<long>(
          "--ft-sensor", [&o](long port) { o.ft_sensor_port = uint16_t(port); },
          "also serve a simulated ATI Net F/T sensor (RDT over UDP) on this port of --bind, reading a zero "
@@ -139,17 +144,13 @@ void describe(CLI::App& app, Options& o, std::string& model, long& control_port,
       ->check(ipv4Address());
   app.add_flag("--loopback-io", o.loopback_io, "wire DO k to DI k");
   app.add_flag("--motors-on", o.motors_on, "start with the motors powered on");
-  app.add_option("--reboot-pause", o.reboot_pause_ms, "how long a reboot takes (default 2000)")
-      ->type_name("MS")
-      ->check(wholeNumber(0, 600000));
-  app.add_option("--connect-timeout", o.connect_timeout_ms,
-                 "a connection that has not sent Connect by then is closed (default 3000; 0 = never)")
-      ->type_name("MS")
-      ->check(wholeNumber(0, 3600000));
-  app.add_option("--idle-timeout", o.idle_timeout_ms,
-                 "a session silent this long gives way to a new client (default 10000; 0 = never)")
-      ->type_name("MS")
-      ->check(wholeNumber(0, 3600000));
+  addWhole(app, "--reboot-pause", o.reboot_pause_ms, "how long a reboot takes (default 2000)", "MS", 0, 600000);
+  addWhole(app, "--connect-timeout", o.connect_timeout_ms,
+           "a connection that has not sent Connect by then is closed (default 3000; 0 = never)",
+           "MS", 0, 3600000);
+  addWhole(app, "--idle-timeout", o.idle_timeout_ms,
+           "a session silent this long gives way to a new client (default 10000; 0 = never)",
+           "MS", 0, 3600000);
   app.add_flag_callback("--no-realtime", [&o] { o.realtime = false; }, "do not ask for SCHED_FIFO and memory locking");
 
   // The simulated KUKA controller (docs/rsi.md, "The simulated KRC").
@@ -170,31 +171,28 @@ void describe(CLI::App& app, Options& o, std::string& model, long& control_port,
   app.add_option("--start-joints-deg", rsi.start_joints,
                  "A1..A6 where RSI starts, degrees (default 0,-90,90,0,90,0)")
       ->type_name("A1,...,A6");
-  app.add_option("--rsi-restart-pause", o.rsi_restart_pause_ms,
-                 "after RSI stops on an error (RSITimeout, a monitor), start it again after this long, like a looping "
-                 "KRL program (default 2000; 0 = never)")
-      ->type_name("MS")
-      ->check(wholeNumber(0, 600000));
+  addWhole(app, "--rsi-restart-pause", o.rsi_restart_pause_ms,
+           "after RSI stops on an error (RSITimeout, a monitor), start it again after this long, like a looping "
+           "KRL program (default 2000; 0 = never)",
+           "MS", 0, 600000);
   app.add_option("--rsi-ipoc-start", o.rsi_ipoc_start, "the first IPOC (default 0; it advances by the cycle in ms)")
       ->type_name("N");
   app.add_option("--external-wrench", rsi.wrench,
                  "force and torque the world applies at the flange, base frame (N, Nm); the --ft-sensor reads it")
       ->type_name("FX,FY,FZ,TX,TY,TZ");
-  app.add_option("--rsi-drop-answers", o.rsi_drop_answers, "fault: treat this many answers as never received")
-      ->type_name("N")
-      ->check(wholeNumber(0, 1000000));
-  app.add_option("--rsi-delay-answers", o.rsi_delay_answers, "fault: count this many answers late")
-      ->type_name("N")
-      ->check(wholeNumber(0, 1000000));
-  app.add_option("--rsi-duplicate", o.rsi_duplicate_robs, "fault: send this many <Rob> datagrams twice")
-      ->type_name("N")
-      ->check(wholeNumber(0, 1000000));
-  app.add_option("--rsi-suspend", o.rsi_suspend_ms, "fault: stop sending for this long (RSI off, no timeout)")
-      ->type_name("MS")
-      ->check(wholeNumber(0, 600000));
-  app.add_option("--rsi-faults-after", o.rsi_faults_after_ms, "when the faults above begin (default 1000 after the start)")
-      ->type_name("MS")
-      ->check(wholeNumber(0, 3600000));
+  addWhole(app, "--rsi-drop-answers", o.rsi_drop_answers,
+           "fault: treat this many answers as never received",
+           "N", 0, 1000000);
+  addWhole(app, "--rsi-delay-answers", o.rsi_delay_answers, "fault: count this many answers late", "N", 0, 1000000);
+  addWhole(app, "--rsi-duplicate", o.rsi_duplicate_robs,
+           "fault: send this many <Rob> datagrams twice",
+           "N", 0, 1000000);
+  addWhole(app, "--rsi-suspend", o.rsi_suspend_ms,
+           "fault: stop sending for this long (RSI off, no timeout)",
+           "MS", 0, 600000);
+  addWhole(app, "--rsi-faults-after", o.rsi_faults_after_ms,
+           "when the faults above begin (default 1000 after the start)",
+           "MS", 0, 3600000);
 }
 
 // CLI11's parse error as the message that main() prints: what was wrong with which option.

@@ -576,7 +576,7 @@ class TestSimKrc : public QObject {
     QCOMPARE(QString::fromStdString(executeKrcControlLine(k, "di 65 1")),
              QString("error di: the input index must be a whole number from 1 to 64, got '65'; usage: di INDEX(1-64) "
                      "LEVEL(0|1)"));
-    QVERIFY(executeKrcControlLine(k, "drop states 2").rfind("error drop: expected 'answers', got 'states'", 0) == 0);
+    QVERIFY(executeKrcControlLine(k, "drop states 2").rfind("error drop: this fault applies to answers only, got 'states'", 0) == 0);
     QVERIFY(executeKrcControlLine(k, "estop on").rfind("error unknown command 'estop'; type help", 0) == 0);
     QVERIFY(executeKrcControlLine(k, "help").find("wrench FX FY FZ TX TY TZ") != std::string::npos);
   }

@@ -55,7 +55,7 @@ out=$("$cli" run "$example" --robot rsi-sim 2>&1)
 [ $? -eq 1 ] || fail "an xMate program on the simulated KRC should exit 1: $out"
 echo "$out" | grep -q 'an xMate: run it with --robot sim' || fail "no advice for the xMate program: $out"
 
-# The same program against a simulated KRC in another process (rci-sim --rsi), as against a robot:
+# The same program against a simulated KRC in another process (rci-sim --rsi, in lock-step), as against a robot:
 # rci-cli listens where --bind/--port say and reads the limits from the context given.
 data=$(dirname "$(dirname "$example")")
 sim=$(dirname "$(dirname "$cli")")/rci-sim/rci-sim
@@ -64,7 +64,7 @@ out=$("$cli" run "$kuka" --robot "rsi:$data/rsi/RSI_EthernetConfig.xml" --bind 1
 [ $? -eq 1 ] || fail "two contexts naming the config should need --context: $out"
 echo "$out" | grep -q 'RSI contexts beside .* name it; give the one the robot runs with --context' ||
   fail "no advice to give --context: $out"
-"$sim" --rsi "$data/rsi/rci_replay.rsi.xml" --rsi-target "127.0.0.1:$port" --model kr6_r900_sixx --no-realtime \
+"$sim" --rsi "$data/rsi/rci_replay.rsi.xml" --rsi-target "127.0.0.1:$port" --model kr6_r900_sixx --no-realtime --lockstep \
   > "$work/rci_sim_rsi.log" 2>&1 &
 sim_pid=$!
 out=$("$cli" run "$kuka" --robot "rsi:$data/rsi/RSI_EthernetConfig.xml" --bind 127.0.0.1 --port "$port" \
@@ -74,4 +74,6 @@ kill "$sim_pid" 2>/dev/null
 wait "$sim_pid" 2>/dev/null
 [ $status -eq 0 ] || fail "run against rci-sim --rsi exited $status: $out; rci-sim: $(cat "$work/rci_sim_rsi.log")"
 echo "$out" | grep -q '^finished: 7 instructions' || fail "the run against rci-sim --rsi did not finish: $out"
+grep -q 'in lock-step (each cycle as soon as its answer is in), cycle 4 ms' "$work/rci_sim_rsi.log" ||
+  fail "rci-sim --rsi --lockstep does not say it runs in lock-step: $(cat "$work/rci_sim_rsi.log")"
 echo "11 passed, 0 failed"

@@ -30,10 +30,26 @@ int parseInteger(std::string_view word, const char* what, int min, int max);
 bool parseOnOff(std::string_view word);
 void expectWords(const Words& words, size_t count);  // the command and count - 1 arguments
 
+// A fault for the next N datagrams, "VERB NOUN N" ("drop answers 5", "corrupt states 3"): applies
+// `apply(N)` (N from 1 to `max`) and answers "DOING the next N NOUN". Throws ControlUsageError for
+// another noun or a bad N.
+template <class Apply>
+std::string runCountFault(const Words& words, const char* noun, const char* doing, int max, Apply apply);
+
 // "wrench FX FY FZ TX TY TZ": the six numbers (N, Nm), and the answer's text naming `where` it acts
 // ("at the TCP", "at the flange").
 std::array<double, 6> parseWrench(const Words& words);
 std::string wrenchText(const std::array<double, 6>& wrench, const char* where);
+
+template <class Apply>
+std::string runCountFault(const Words& words, const char* noun, const char* doing, int max, Apply apply) {
+  expectWords(words, 3);
+  if (words[1] != noun)
+    throw ControlUsageError("this fault applies to " + std::string(noun) + " only, got '" + std::string(words[1]) + "'");
+  const int n = parseInteger(words[2], "N", 1, max);
+  apply(n);
+  return std::string(doing) + " the next " + std::to_string(n) + " " + noun;
+}
 
 template <class Target>
 struct ControlCommand {

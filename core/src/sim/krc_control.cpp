@@ -39,15 +39,6 @@ std::string runOverride(Krc& krc, const Words& w) {
   return text;
 }
 
-// "drop answers N", "delay answers N", "duplicate robs N"
-std::string runCountFault(const Words& w, const char* noun, const char* done, void (Krc::*apply)(int), Krc& krc) {
-  expectWords(w, 3);
-  if (w[1] != noun) throw ControlUsageError("expected '" + std::string(noun) + "', got '" + std::string(w[1]) + "'");
-  const int n = parseInteger(w[2], "N", 1, kMaxCount);
-  (krc.*apply)(n);
-  return std::string(done) + " the next " + std::to_string(n) + " " + noun;
-}
-
 std::string runSuspend(Krc& krc, const Words& w) {
   expectWords(w, 2);
   const int ms = parseInteger(w[1], "MS", 1, kMaxSuspendMs);
@@ -61,11 +52,17 @@ const std::vector<ControlCommand<Krc>>& commands() {
       {"di", "di INDEX(1-64) LEVEL(0|1)", runDigitalInput},
       {"override", "override PERCENT(0-100)", runOverride},
       {"drop", "drop answers N",
-       [](Krc& k, const Words& w) { return runCountFault(w, "answers", "dropping", &Krc::dropAnswers, k); }},
+       [](Krc& k, const Words& w) {
+         return runCountFault(w, "answers", "dropping", kMaxCount, [&](int n) { k.dropAnswers(n); });
+       }},
       {"delay", "delay answers N (each counts late)",
-       [](Krc& k, const Words& w) { return runCountFault(w, "answers", "delaying", &Krc::delayAnswers, k); }},
+       [](Krc& k, const Words& w) {
+         return runCountFault(w, "answers", "delaying", kMaxCount, [&](int n) { k.delayAnswers(n); });
+       }},
       {"duplicate", "duplicate robs N",
-       [](Krc& k, const Words& w) { return runCountFault(w, "robs", "duplicating", &Krc::duplicateRobs, k); }},
+       [](Krc& k, const Words& w) {
+         return runCountFault(w, "robs", "duplicating", kMaxCount, [&](int n) { k.duplicateRobs(n); });
+       }},
       {"suspend", "suspend MS (RSI off without a timeout)", runSuspend},
       {"status", "status",
        [](Krc& k, const Words& w) {

@@ -72,6 +72,7 @@ bool KrcServer::cycle(int64_t deadline_ns, bool stop_when_answered) {
   }
   // Lock-step waits only for an answer it needs; the timed loop keeps the clock (and reads what comes).
   const bool wait = stop_when_answered ? krc.awaitingAnswer() : true;
+  waited_ = wait;
   while (wait) {
     const int64_t left_ns = deadline_ns - net::monotonicNs();
     if (left_ns <= 0) break;
@@ -95,6 +96,14 @@ void KrcServer::run() {
     status_.reason = "real-time scheduling not requested";
   status_ready_.store(true, std::memory_order_release);
   const int64_t period_ns = int64_t(krc_->cycleMs()) * 1'000'000;
+  if (config_.lockstep) {
+    while (!quit_.load(std::memory_order_acquire)) {
+      const int64_t start_ns = net::monotonicNs();
+      cycle(start_ns + int64_t(config_.lockstep_timeout_ms) * 1'000'000, true);
+      if (!waited_) net::sleepUntilNs(start_ns + period_ns);  // RSI off: the KRC's clock runs at wall time
+    }
+    return;
+  }
   int64_t next_ns = net::monotonicNs();
   while (!quit_.load(std::memory_order_acquire)) {
     const int64_t deadline_ns = next_ns + period_ns;

@@ -27,7 +27,11 @@ struct KrcServerConfig {
   uint16_t bind_port = 0;
   std::string target_ip;   // where <Rob> goes: "" = the Ethernet config's IP_NUMBER (must then be an address)
   uint16_t target_port = 0;  // 0 = the Ethernet config's PORT
-  // Lock-step: step() waits this long for the answer before the cycle counts it late.
+  // Lock-step: step() -- and the thread start() runs when `lockstep` is set -- waits this long for
+  // the answer before the cycle counts it late. With `lockstep` the thread starts the next cycle as
+  // soon as the answer is in: the KRC's clock follows the PC's answers, not wall time (cycles
+  // without an exchange -- RSI off -- still take cycle_ms of wall time).
+  bool lockstep = false;
   int lockstep_timeout_ms = 1000;
   bool realtime = false;  // the timed thread tries SCHED_FIFO and locks its memory (reported, never required)
   int realtime_priority = 80;
@@ -46,7 +50,8 @@ class KrcServer {
   KrcServer& operator=(const KrcServer&) = delete;
 
   // The timed thread ("rci-krc"): a cycle every cycle_ms of wall time; an answer not in by the next
-  // send is late. Any thread, not real-time; not together with step().
+  // send is late (or, with config.lockstep, one cycle after another as step() does). Any thread, not
+  // real-time; not together with step().
   void start();
   void stop();
   bool running() const { return thread_.joinable(); }
@@ -68,6 +73,7 @@ class KrcServer {
   // One cycle: <Rob> out (twice on the duplicate fault), answers in until deadline_ns (or until the
   // answer, in lock-step), Krc::endCycle, the F/T sensor fed. Allocation-free.
   bool cycle(int64_t deadline_ns, bool stop_when_answered);
+  bool waited_ = false;  // the last cycle() waited for an answer (it sent a <Rob> that needs one)
   void run();
 
   const KrcServerConfig config_;

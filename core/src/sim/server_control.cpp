@@ -85,15 +85,6 @@ std::string runDelay(Server& server, const Words& w) {
   return "delaying the next " + std::to_string(n) + " commands by " + std::to_string(ms) + " ms";
 }
 
-// "reorder states N", "corrupt states N", "badlength states N"
-std::string runStateFault(const Words& w, const std::function<void(int)>& apply, const char* verb) {
-  expectWords(w, 3);
-  if (w[1] != "states") throw UsageError("this fault applies to states only, got '" + std::string(w[1]) + "'");
-  const int n = parseInteger(w[2], "N", 1, kMaxFaultCount);
-  apply(n);
-  return std::string(verb) + " the next " + std::to_string(n) + " states";
-}
-
 // "payload KG [CX CY CZ]" (a point mass) or "payload follow"
 std::string runPayload(Server& server, const Words& w) {
   if (w.size() == 2 && w[1] == "follow") {
@@ -149,12 +140,16 @@ const std::vector<ControlCommand<Server>>& commands() {
       {"drop", "drop states N | drop commands N", runDrop},
       {"delay", "delay commands N MS", runDelay},
       {"reorder", "reorder states N (pairs are swapped)",
-       [](Server& s, const Words& w) { return runStateFault(w, [&](int n) { s.reorderStates(n); }, "reordering"); }},
+       [](Server& s, const Words& w) {
+         return runCountFault(w, "states", "reordering", kMaxFaultCount, [&](int n) { s.reorderStates(n); });
+       }},
       {"corrupt", "corrupt states N",
-       [](Server& s, const Words& w) { return runStateFault(w, [&](int n) { s.corruptStates(n); }, "corrupting"); }},
+       [](Server& s, const Words& w) {
+         return runCountFault(w, "states", "corrupting", kMaxFaultCount, [&](int n) { s.corruptStates(n); });
+       }},
       {"badlength", "badlength states N",
        [](Server& s, const Words& w) {
-         return runStateFault(w, [&](int n) { s.sendWrongLengthStates(n); }, "shortening");
+         return runCountFault(w, "states", "shortening", kMaxFaultCount, [&](int n) { s.sendWrongLengthStates(n); });
        }},
       {"status", "status", runStatus},
       {"kill", "kill", runKill},

@@ -24,6 +24,7 @@
 #include "teach/preflight.h"
 #include "teach/targets.h"
 #include "teach/plan_scaling.h"
+#include "teach/settle.h"
 #include "teach/time_scaling.h"
 
 namespace xmate::teach {
@@ -37,9 +38,7 @@ constexpr double kDt = 1e-3;
 // After a motion the arm is at rest when every measured joint is this close to the last command
 // and this slow: far below what an operator or a next instruction notices (0.003 deg), well above
 // what a real arm's encoders and friction leave at standstill.
-constexpr double kSettleTolerance = 5e-5;  // rad
-constexpr double kSettleSpeed = 2e-3;      // rad/s
-constexpr int kSettleLimitMs = 1000;
+constexpr double kSettleSpeed = 2e-3;      // rad/s: "at rest" on the xMate also means this slow
 constexpr int kStartRetryMs = 3000;
 
 // Plan time driven by the controller's message_id and the time scaling. As client/move.cpp's
@@ -109,21 +108,14 @@ bool atRest(const RobotState& s, int dof) {
   return true;
 }
 
-// Waits (at most kSettleLimitMs) until the arm is at rest at the last command; records how long
-// that took in controller time, or that it did not come to rest.
-void settle(Robot& robot, int dof, InstructionReport& report) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(kSettleLimitMs);
-  const RobotState first = robot.receiveRobotState();
-  for (RobotState s = first;; s = robot.receiveRobotState()) {
-    report.settle_time = double(s.message_id - first.message_id) * kDt;
-    if (atRest(s, dof)) return;
-    if (std::chrono::steady_clock::now() >= end) {
-      report.settled = false;
-      report.settle_error = jointError(s, dof);
-      return;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
+// Waits until the arm is at rest at the last command (settle.h).
+void settleAtTarget(Robot& robot, int dof, InstructionReport& report) {
+  settle(
+      [&] {
+        const RobotState s = robot.receiveRobotState();
+        return SettleReading{atRest(s, dof), jointError(s, dof), s.message_id};
+      },
+      kDt, report);
 }
 
 // Ends a motion that was started but will not be streamed (its plan failed or is empty).
@@ -289,7 +281,7 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
     report.status = InstructionStatus::kStopped;
     report.message = "stopped by the operator";
   }
-  settle(*robot_, dof, report);
+  settleAtTarget(*robot_, dof, report);
 }
 
 }  // namespace xmate::teach

@@ -19,6 +19,7 @@
 #include "rsi/joint_stream.h"
 #include "teach/executor.h"
 #include "teach/plan_scaling.h"
+#include "teach/settle.h"
 #include "teach/robot_port.h"
 #include "teach/targets.h"
 
@@ -26,8 +27,6 @@ namespace xmate::teach {
 namespace {
 
 constexpr double kGridDt = 1e-3;  // plan time between two precomputed joint samples
-constexpr double kSettleTolerance = 5e-5;  // rad, as on the xMate (executor_motion.cpp)
-constexpr int kSettleLimitMs = 1000;
 
 // A KUKA through its RSI stream. Its TCP is the model's at the commanded joints with the program's
 // tool (RSI does not tell the PC which tool the controller has active); its digital IO is what the
@@ -197,20 +196,13 @@ void Executor::runRsiMotion(const Program& program, size_t index, InstructionRep
     report.message = "stopped by the operator";
   }
   // Settled: the actual axes have caught up with the last command.
-  const auto start = std::chrono::steady_clock::now();
-  stream.state(state);
-  const uint64_t first_cycle = state.cycles;
-  for (;;) {
-    stream.state(state);
-    if (maxDifference(state.q_command, state.q) < kSettleTolerance) break;
-    if (std::chrono::steady_clock::now() - start > std::chrono::milliseconds(kSettleLimitMs)) {
-      report.settled = false;
-      report.settle_error = maxDifference(state.q_command, state.q);
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  report.settle_time = double(state.cycles > first_cycle ? state.cycles - first_cycle : 0) * dt;
+  settle(
+      [&] {
+        stream.state(state);
+        const double error = maxDifference(state.q_command, state.q);
+        return SettleReading{error < kSettleTolerance, error, state.cycles};
+      },
+      dt, report);
 }
 
 }  // namespace xmate::teach
