@@ -64,6 +64,25 @@ void TestRsiLink::answersEveryRobWithTheCorrections() {
   QTRY_COMPARE_WITH_TIMEOUT(link.counters().answered, uint64_t(10), 2000);
   QCOMPARE(link.counters().received, uint64_t(10));
   QCOMPARE(link.counters().sessions, uint64_t(1));
+  // Every cycle is in the sample ring, in order, with its answer time.
+  QTRY_COMPARE_WITH_TIMEOUT(link.samples().size(), size_t(10), 2000);
+  for (uint64_t ipoc = 1000; ipoc < 1010; ++ipoc) {
+    LinkSample s;
+    QVERIFY(link.samples().pop(s));
+    QCOMPARE(s.ipoc, ipoc);
+    QCOMPARE(s.session, 1u);
+    QCOMPARE(s.values[size_t(a1)], 12.5);
+    QCOMPARE(s.count, 47u);  // the sample config's slots
+    QVERIFY(s.answer_ns >= 0);
+  }
+  QCOMPARE(link.samples().dropped(), uint64_t(0));
+
+  // A RECEIVE value set from another thread goes out in the next answer, and stays.
+  link.setReceiveValue(link.receiveSlot("Digout", "o3"), 1);
+  QCOMPARE(attribute(robot.exchange(1010), "o3"), 1.0);
+  QCOMPARE(attribute(robot.exchange(1011), "o3"), 1.0);
+  QCOMPARE(attribute(robot.exchange(1012), "o2"), 0.0);
+  QVERIFY_THROWS_EXCEPTION(std::out_of_range, link.setReceiveValue(999, 1));
 }
 
 void TestRsiLink::relativeModeSendsChangesAndRestartsWithTheSession() {
@@ -115,6 +134,9 @@ void TestRsiLink::slowCallbackIsCountedLate() {
   FakeRobot robot(link.port());
   for (uint64_t ipoc = 1; ipoc <= 3; ++ipoc) QVERIFY(!robot.exchange(ipoc).empty());
   QTRY_COMPARE_WITH_TIMEOUT(link.counters().late, uint64_t(3), 2000);
+  QTRY_COMPARE_WITH_TIMEOUT(link.samples().size(), size_t(3), 2000);
+  LinkSample s;
+  while (link.samples().pop(s)) QVERIFY2(s.late && s.answer_ns >= 10'000'000, qPrintable(QString::number(s.answer_ns)));
 }
 
 void TestRsiLink::bindFailureSaysWhatToDo() {

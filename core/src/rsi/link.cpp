@@ -3,6 +3,7 @@
 #include "rsi/link.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -90,7 +91,7 @@ void Link::takeReceiveValues() {
       encoder_.set(int(i), receive_values_[i].value.load(std::memory_order_relaxed));
 }
 
-void Link::answer(const net::Endpoint& to, int64_t received_ns) {
+int64_t Link::answer(const net::Endpoint& to, int64_t received_ns) {
   takeReceiveValues();
   const Correction c = callback_ ? callback_(decoder_) : Correction{};
   if (c.kind != Correction::Kind::kNone) {
@@ -101,15 +102,17 @@ void Link::answer(const net::Endpoint& to, int64_t received_ns) {
     }
     last_total_ = c.values;
   }
-  if (config_.only_send) return;
+  if (config_.only_send) return -1;
   char out[kMaxSenBytes];
   const size_t n = encoder_.encode(decoder_.ipocText(), out, sizeof out);
   if (n == 0 || socket_.sendTo(to, out, n) != long(n)) {
     ++counting_.send_failures;
-    return;
+    return -1;
   }
   ++counting_.answered;
-  if (net::monotonicNs() - received_ns > int64_t(options_.cycle_ms) * 1'000'000) ++counting_.late;
+  const int64_t took = net::monotonicNs() - received_ns;
+  if (took > int64_t(options_.cycle_ms) * 1'000'000) ++counting_.late;
+  return took;
 }
 
 void Link::run() {
@@ -148,8 +151,17 @@ void Link::run() {
     sample.count = uint32_t(std::min(decoder_.layout().size(), kMaxSlots));
     for (uint32_t i = 0; i < sample.count; ++i) sample.values[i] = decoder_.value(int(i));
     latest_.store(sample);
-    answer(from, now);
+    const int64_t took = answer(from, now);
     counters_.store(counting_);
+    LinkSample brief;
+    brief.ipoc = sample.ipoc;
+    brief.received_ns = now;
+    brief.answer_ns = took < 0 ? -1 : int32_t(std::min<int64_t>(took, INT32_MAX));
+    brief.session = session_;
+    brief.late = took > int64_t(options_.cycle_ms) * 1'000'000;
+    brief.count = uint32_t(std::min<size_t>(sample.count, kSampleSlots));
+    for (uint32_t i = 0; i < brief.count; ++i) brief.values[i] = sample.values[i];
+    samples_->push(brief);
   }
 }
 

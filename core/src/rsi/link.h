@@ -16,6 +16,7 @@
 
 #include "net/realtime.h"
 #include "net/seqlock.h"
+#include "net/spsc_ring.h"
 #include "net/udp_socket.h"
 #include "rsi/codec.h"
 #include "rsi/config.h"
@@ -56,6 +57,20 @@ struct RobSample {
   std::array<double, kMaxSlots> values{};
 };
 
+// One cycle in brief, for plots and statistics: pushed to Link::samples() for every <Rob> decoded
+// (trivially copyable, fixed size).
+inline constexpr size_t kSampleSlots = 64;
+struct LinkSample {
+  uint64_t ipoc = 0;
+  int64_t received_ns = 0;  // net::monotonicNs() when the <Rob> arrived
+  int32_t answer_ns = -1;   // from its arrival to the <Sen> sent; -1: not answered (ONLYSEND, send failed)
+  uint32_t session = 0;
+  uint32_t count = 0;       // values filled: the decoder's first slots (layout order), at most kSampleSlots
+  bool late = false;        // answered more than a cycle after the <Rob>
+  std::array<double, kSampleSlots> values{};
+};
+using LinkSampleRing = net::SpscRing<LinkSample, 2048>;  // 8 s at 4 ms; ~1 MB, allocated once
+
 struct LinkCounters {
   uint64_t received = 0;  // <Rob> datagrams decoded
   uint64_t answered = 0;  // <Sen> sent
@@ -89,6 +104,9 @@ class Link {
   bool receiving() const { return receiving_.load(std::memory_order_acquire); }
   LinkCounters counters() const;
   const char* lastReason() const { return last_reason_.load(std::memory_order_acquire); }
+  // Every cycle's LinkSample, oldest first: exactly one consumer thread may pop (lock-free). When
+  // it falls behind by a whole ring, new samples are dropped and counted (samples().dropped()).
+  LinkSampleRing& samples() { return *samples_; }
   net::RealtimeStatus realtimeStatus() const;
   // Only inside the callback (the link's thread): the RSI session the datagram belongs to (1 for
   // the first; +1 each time the robot starts sending again after silence -- a new RSI_ON).
@@ -106,7 +124,8 @@ class Link {
 
  private:
   void run();
-  void answer(const net::Endpoint& to, int64_t received_ns);
+  // Returns the answer's time after the <Rob> (ns), -1 if none was sent.
+  int64_t answer(const net::Endpoint& to, int64_t received_ns);
   void takeReceiveValues();  // the link's thread: setReceiveValue's values into the encoder
   void newSession();
 
@@ -125,6 +144,7 @@ class Link {
   std::atomic<bool> receiving_{false};
   std::atomic<const char*> last_reason_{""};
   net::Seqlock<RobSample> latest_;
+  std::unique_ptr<LinkSampleRing> samples_ = std::make_unique<LinkSampleRing>();
   net::Seqlock<LinkCounters> counters_;
   LinkCounters counting_;  // the thread's own copy, published after every datagram
   uint32_t session_ = 0;
