@@ -20,7 +20,7 @@
 #include "cli.h"
 #include "model/resource_locator.h"
 #include "model/robot_spec.h"
-#include "rsi/digital_io.h"
+#include "arm/rsi_arm.h"
 #include "rsi/joint_stream.h"
 #include "rsi/link.h"
 #include "sim/krc_server.h"
@@ -183,20 +183,18 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
   if (context_path.empty())
     context_path = simulated ? (model::dataDirectory() / "resources/rsi/rci_replay.rsi.xml").string()
                              : contextNaming(o.robot.rsi_config);
-  const rsi::Context context = rsi::readContext(context_path);
-  const std::string config_path = simulated ? context.ethernetConfigPath() : o.robot.rsi_config;
-  const rsi::EthernetConfig config = rsi::readEthernetConfig(config_path);
-
-  rsi::LinkOptions link_options;
-  link_options.bind_ip = simulated ? "127.0.0.1" : o.listen.bind_ip;
-  link_options.port = simulated ? 0 : int(o.listen.port);
-  link_options.cycle_ms = o.cycle_ms;
-  rsi::Link link(config, link_options);
-  rsi::JointStream stream(link, spec, rsi::axisCorrectionLimits(context));
-  rsi::DigitalIoMap io_map = rsi::digitalIoMap(context, config);
-  std::unique_ptr<rsi::DigitalIo> io;
-  if (!io_map.inputs.empty() || !io_map.outputs.empty()) io = std::make_unique<rsi::DigitalIo>(link, std::move(io_map));
-  link.start();
+  arm::RsiArmConfig arm_config;
+  arm_config.context_path = context_path;
+  arm_config.ethernet_config_path = simulated ? "" : o.robot.rsi_config;
+  arm_config.model = std::string(spec.name);
+  arm_config.link.bind_ip = simulated ? "127.0.0.1" : o.listen.bind_ip;
+  arm_config.link.port = simulated ? 0 : int(o.listen.port);
+  arm_config.link.cycle_ms = o.cycle_ms;
+  arm::RsiArm arm(arm_config);
+  rsi::Link& link = arm.link();
+  rsi::JointStream& stream = arm.stream();
+  const rsi::EthernetConfig& config = arm.ethernetConfig();
+  arm.start();
   std::unique_ptr<sim::KrcServer> krc;
   if (simulated) {
     sim::KrcServerConfig k;
@@ -208,7 +206,7 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
     krc = std::make_unique<sim::KrcServer>(k);
     krc->start();
   }
-  const std::string where = (link_options.bind_ip.empty() ? config.ip : link_options.bind_ip) + ":" +
+  const std::string where = (arm_config.link.bind_ip.empty() ? config.ip : arm_config.link.bind_ip) + ":" +
                             std::to_string(link.port());
   waitForRsi(link, stream, where);
   std::printf("running %s (%zu instructions, %s) over RSI on %s%s, %d ms cycle, context %s, at %.0f %% speed\n",
@@ -217,10 +215,10 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
               std::filesystem::path(context_path).filename().c_str(), o.speed * 100);
   std::fflush(stdout);
   const int status = replay(o, program, [&](Executor& executor, const ExecutorOptions& options) {
-    return executor.run(stream, io.get(), program, options);
+    return executor.run(stream, arm.digitalIo(), program, options);
   });
   if (krc) krc->stop();
-  link.stop();
+  arm.stop();
   return status;
 }
 

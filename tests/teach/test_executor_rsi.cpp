@@ -13,7 +13,7 @@
 
 #include "model/arm_kinematics.h"
 #include "model/robot_spec.h"
-#include "rsi/digital_io.h"
+#include "arm/rsi_arm.h"
 #include "rsi/joint_stream.h"
 #include "rsi/link.h"
 #include "sim/krc_server.h"
@@ -35,30 +35,28 @@ const model::RobotSpec& kr6() { return *model::findRobotSpec("kr6_r900_sixx"); }
 
 // The PC side and a simulated KRC running `context` on loopback.
 struct Cell {
-  rsi::EthernetConfig config;
-  std::unique_ptr<rsi::Link> link;
-  std::unique_ptr<rsi::JointStream> stream;
-  std::unique_ptr<rsi::DigitalIo> io;  // as rci-cli run: when the context wires any
+  std::unique_ptr<arm::RsiArm> arm;  // as rci-cli run: link, joint stream and the wired IO
+  rsi::JointStream* stream = nullptr;
+  rsi::DigitalIo* io = nullptr;
   std::unique_ptr<sim::KrcServer> krc;
 
   explicit Cell(const std::string& context) {
-    const rsi::Context c = rsi::readContext(dataPath(context));
-    config = rsi::readEthernetConfig(c.ethernetConfigPath());
-    rsi::LinkOptions options;
-    options.bind_ip = "127.0.0.1";
-    options.port = 0;  // a free port
-    options.realtime = false;
-    options.silence_ms = 200;
-    link = std::make_unique<rsi::Link>(config, options);
-    stream = std::make_unique<rsi::JointStream>(*link, kr6(), rsi::axisCorrectionLimits(c));
-    rsi::DigitalIoMap map = rsi::digitalIoMap(c, config);
-    if (!map.inputs.empty() || !map.outputs.empty()) io = std::make_unique<rsi::DigitalIo>(*link, std::move(map));
-    link->start();
+    arm::RsiArmConfig config;
+    config.context_path = dataPath(context);
+    config.model = "kr6_r900_sixx";
+    config.link.bind_ip = "127.0.0.1";
+    config.link.port = 0;  // a free port
+    config.link.realtime = false;
+    config.link.silence_ms = 200;
+    arm = std::make_unique<arm::RsiArm>(config);
+    stream = &arm->stream();
+    io = arm->digitalIo();
+    arm->start();
     sim::KrcServerConfig k;
     k.krc.context_path = dataPath(context);
     k.krc.model = "kr6_r900_sixx";
     k.target_ip = "127.0.0.1";
-    k.target_port = link->port();
+    k.target_port = arm->link().port();
     krc = std::make_unique<sim::KrcServer>(k);
     krc->start();
     // As rci-cli run does: the program starts once RSI runs.
@@ -69,7 +67,7 @@ struct Cell {
   }
   ~Cell() {
     krc->stop();
-    link->stop();
+    arm->stop();
   }
   // The joints the KRC's arm has (rad).
   std::array<double, 7> actual() const {
@@ -153,7 +151,7 @@ void TestExecutorRsi::programReachesItsTargets() {
   p.instructions.push_back(moveJ(jointsTarget(home), 1.0, "home"));
 
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
   QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
   const std::array<std::array<double, 7>, 4> expected{j1, l2, c3, home};
   for (size_t i = 0; i < expected.size(); ++i) {
@@ -176,7 +174,7 @@ void TestExecutorRsi::beyondTheCorrectionLimitIsRefusedBeforeMoving() {
   p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 0, 0})), 0.5, "near"));
   p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 12, 0})), 0.5, "far"));
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
   QCOMPARE(report.outcome, RunState::kFailed);
   QCOMPARE(report.failed_instruction, 1L);
   const QString message = QString::fromStdString(report.message);
@@ -197,7 +195,7 @@ void TestExecutorRsi::rsiGoingOffFailsTheMotion() {
     waitForFraction(executor, 0.2);
     cell.krc->krc().suspendSending(3000);  // RSI off without a timeout, e.g. the KRL program ended
   });
-  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
   operator_thread.join();
   QCOMPARE(report.outcome, RunState::kFailed);
   QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 1 (MOVEJ \"slow\"): RSI stopped during the motion"),
@@ -216,7 +214,7 @@ void TestExecutorRsi::stopBrakesAndEndsTheRun() {
     waitForFraction(executor, 0.3);
     executor.stop();
   });
-  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
   operator_thread.join();
   QVERIFY2(report.outcome == RunState::kStopped, report.message.c_str());
   QCOMPARE(report.instructions[0].status, InstructionStatus::kStopped);
@@ -252,7 +250,7 @@ void TestExecutorRsi::digitalSignalsGoThroughTheContext() {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));  // it is waiting now
     cell.krc->krc().setDigitalInput(2, true);
   });
-  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
   operator_thread.join();
   QCOMPARE(report.instructions[0].status, InstructionStatus::kDone);
   QCOMPARE(report.instructions[1].status, InstructionStatus::kDone);
@@ -275,7 +273,7 @@ void TestExecutorRsi::withoutWiredSignalsSetDoSaysSo() {
   on.value = true;
   p.instructions = {on};
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, cell.io.get(), p, {});
+  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
   QCOMPARE(report.outcome, RunState::kFailed);
   QVERIFY2(QString::fromStdString(report.message).contains("the RSI context wires no digital inputs or outputs to the PC"),
            report.message.c_str());

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: Apache-2.0
+// arm::RciArm (rci_arm.h): RobotState and the client's StateSample ring as ArmSamples, Control()
+// in joint-position mode as runJointMotion, and the controller's six DO / DI.
+#include "arm/rci_arm.h"
+
+#include <stdexcept>
+
+#include "client/connection.h"
+#include "model/robot_spec.h"
+#include "teach/program.h"
+
+namespace xmate::arm {
+namespace {
+
+using RCI::robot::RobotState;
+
+ArmSample sampleOf(const RobotState& s) {
+  ArmSample out;
+  out.cycle = s.message_id;
+  out.session = 1;
+  out.q = s.q;
+  out.q_command = s.q_c;
+  out.tau = s.tau_m;
+  out.wrench = s.tau_ext_in_base;
+  out.tcp_position = {s.toolTobase_pos_m[3], s.toolTobase_pos_m[7], s.toolTobase_pos_m[11]};
+  return out;
+}
+
+std::vector<std::string> names(bool output) {
+  std::vector<std::string> list;
+  for (int i = 0; i < teach::kXmateSignalCount; ++i)
+    list.push_back(output ? teach::doName(model::RobotFamily::kXmate, i) : teach::diName(model::RobotFamily::kXmate, i));
+  return list;
+}
+
+void checkSignal(size_t index, const char* kind) {
+  if (index >= size_t(teach::kXmateSignalCount))
+    throw std::runtime_error(std::string("the xMate has six digital ") + kind + "s (0 to 5); " + std::to_string(index) +
+                             " is not one");
+}
+
+}  // namespace
+
+RciArm::RciArm(Robot& robot) : robot_(robot), spec_(&model::robotSpec(robot.type())) {}
+
+Capabilities RciArm::capabilities() const {
+  return Capability::kJointTorques | Capability::kExternalWrench | Capability::kPowerControl |
+         Capability::kBuiltInGuiding | Capability::kControllerSafety | Capability::kDigitalIo;
+}
+
+bool RciArm::latest(ArmState& out) const {
+  RobotState s;
+  if (!robot_.connection().latestState(s)) return false;
+  out.sample = sampleOf(s);
+  out.tcp = s.toolTobase_pos_m;
+  return true;
+}
+
+size_t RciArm::takeSamples(ArmSample* out, size_t max) {
+  size_t n = 0;
+  client::StateSample s;
+  while (n < max && robot_.connection().samples().pop(s)) {
+    ArmSample& a = out[n++];
+    a = ArmSample{};
+    a.cycle = s.message_id;
+    a.time = s.time;
+    a.session = 1;
+    a.q = s.q;
+    a.q_command = s.q_c;
+    a.tau = s.tau_m;
+    a.wrench = s.tau_ext_in_base;
+    a.tcp_position = s.tcp_position;
+  }
+  return n;
+}
+
+uint64_t RciArm::samplesDropped() const { return robot_.connection().samples().dropped(); }
+
+void RciArm::runJointMotion(JointMotion& motion) {
+  using CM = RCI::robot::StartMoveRequest::ControllerMode;
+  using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
+  robot_.startMove(CM::kJointPosition, MM::kJointPosition);
+  robot_.Control(JointControl([&motion](RobotState s) -> JointPositions {
+    JointPositions command;
+    const bool last = motion.command(sampleOf(s), command.q);
+    command.motion_finished = last;
+    return command;
+  }));
+}
+
+std::vector<std::string> RciArm::outputNames() const { return names(true); }
+std::vector<std::string> RciArm::inputNames() const { return names(false); }
+
+void RciArm::setOutput(size_t index, bool level) {
+  checkSignal(index, "output");
+  robot_.setDO(RCI::robot::DOSIGNAL(uint8_t(index)), level);
+}
+
+bool RciArm::input(size_t index) {
+  checkSignal(index, "input");
+  return robot_.getDI(RCI::robot::DISIGNAL(uint8_t(index)));
+}
+
+}  // namespace xmate::arm

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: Apache-2.0
+// arm::RciArm: an xMate over RCI as an arm::Arm, on a vendor-compatible xmate::Robot (which stays
+// the API programs written for the xMate use). docs/architecture.md, "One interface for both robot
+// families".
+#pragma once
+
+#include <xmate/robot.h>
+
+#include "arm/arm.h"
+
+namespace xmate::arm {
+
+class RciArm : public Arm {
+ public:
+  // Not owned; it must outlive the arm. The robot connects on its first use (as xmate::Robot does).
+  // takeSamples() pops the robot's sample ring: nothing else may consume it.
+  explicit RciArm(Robot& robot);
+
+  const model::RobotSpec& spec() const override { return *spec_; }
+  Capabilities capabilities() const override;
+  double cycleSeconds() const override { return 0.001; }
+  bool latest(ArmState& out) const override;
+  size_t takeSamples(ArmSample* out, size_t max) override;
+  uint64_t samplesDropped() const override;
+  // startMove in joint-position mode and one JointPositions per state until the motion's last;
+  // throws what Robot::Control throws (ControlException names the controller's error bits).
+  void runJointMotion(JointMotion& motion) override;
+  std::vector<std::string> outputNames() const override;  // DO0_0 .. DO1_1
+  std::vector<std::string> inputNames() const override;   // DI0_0 .. DI1_1
+  void setOutput(size_t index, bool level) override;
+  bool input(size_t index) override;
+
+  Robot& robot() { return robot_; }
+
+ private:
+  Robot& robot_;
+  const model::RobotSpec* spec_;
+};
+
+}  // namespace xmate::arm
