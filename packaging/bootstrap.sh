@@ -44,7 +44,7 @@ case "$mode" in
     configure build-tsan -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DRCI_TSAN=ON -DRCI_BUILD_GUI=OFF -DRCI_BUILD_BENCH=OFF
     cmake --build build-tsan -j "$jobs" --target test_threads test_robot_commands test_faults test_moves \
-      test_joint_stream test_executor_rsi test_arm
+      test_joint_stream test_executor_rsi test_arm test_admittance
     (cd build-tsan && RCI_NO_REALTIME=1 \
       TSAN_OPTIONS="io_sync=0 halt_on_error=1 second_deadlock_stack=1 suppressions=$here/tests/tsan.supp" \
       ctest --output-on-failure -j "$jobs" -L tsan)
