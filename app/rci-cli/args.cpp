@@ -55,6 +55,21 @@ CLI::Validator wholeNumber(long lo, long hi) {
 
 }  // namespace
 
+CLI::Option* addDecimalOption(CLI::App& command, const std::string& name, double& value, double lo, double hi,
+                              const std::string& meaning, const std::string& help) {
+  return command.add_option(name, value, help)->check(CLI::Validator(
+      [lo, hi, meaning](std::string& text) {
+        try {
+          size_t end = 0;
+          const double v = std::stod(text, &end);
+          if (end == text.size() && v >= lo && v <= hi) return std::string();
+        } catch (const std::exception&) {
+        }
+        return "takes " + meaning + ", got '" + text + "'";
+      },
+      ""));
+}
+
 // "HOST" or "HOST:PORT" (default_port when left out); UsageError ending in `expected` otherwise.
 HostPort parseHostPort(const std::string& text, uint16_t default_port, const std::string& expected) {
   xmate::net::HostPort split;

@@ -4,11 +4,18 @@
 // (CLI11's parse errors and UsageError).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <xmate/types.h>
+
+namespace xmate::rsi {
+class Link;
+class JointStream;
+}  // namespace xmate::rsi
 
 namespace CLI {
 class App;
@@ -54,6 +61,10 @@ CLI::Option* addModelOption(CLI::App& command, xmate::XmateType& type, const std
 //   a whole number in [lo, hi].
 CLI::Option* addWholeNumberOption(CLI::App& command, const std::string& name, long& value, long lo, long hi,
                                   const std::string& help);
+//   a decimal option from lo to hi; a value outside says "NAME takes MEANING, got 'X'"
+//   (meaning e.g. "a speed override from 0.1 to 1.0 (e.g. 0.5 = 50 %)").
+CLI::Option* addDecimalOption(CLI::App& command, const std::string& name, double& value, double lo, double hi,
+                              const std::string& meaning, const std::string& help);
 // "'xmate7_pro' -> XMATE7_PRO"; UsageError listing the four names otherwise.
 xmate::XmateType parseModel(const std::string& text);
 
@@ -118,6 +129,28 @@ void parseSensorAddress(const std::string& text, FtOptions& options);
 //   --sensor HOST[:PORT], parsed by parseSensorAddress.
 CLI::Option* addSensorOption(CLI::App& command, FtOptions& options);
 
+// The RSI context beside the Ethernet config `config_path` that names it; std::runtime_error saying
+// to give --context when there is none or more than one.
+std::string contextNaming(const std::string& config_path);
+// Waits (at most a minute, or until `interrupted`) until the robot sends; prints what to do meanwhile.
+// std::runtime_error saying what to check when it does not.
+void waitForRsi(const xmate::rsi::Link& link, const xmate::rsi::JointStream& stream, const std::string& where,
+                const std::atomic<bool>& interrupted);
+
+struct GuideOptions {
+  RobotTarget robot;              // rsi:ETHERNET.xml
+  std::string model_name;         // --model, a KUKA
+  FtOptions sensor;               // --sensor, --counts-per-unit
+  RsiListen listen;
+  std::string context_path;       // "": found beside the config
+  int cycle_ms = 4;
+  std::string axes = "translation";  // translation | rotation | free
+  double tool_mass = 0;           // kg
+  std::vector<double> tool_center{0, 0, 0};  // m, flange frame
+  double max_speed = 0.25;        // m/s
+  long seconds = 0;               // 0: until Ctrl-C
+};
+
 int runModel(xmate::XmateType type);         // rci-cli [model NAME]
 int runFt(const FtOptions& options);         // rci-cli ft --sensor HOST[:PORT] [--count N] [--counts-per-unit C]
 int runState(const StateOptions& options);   // rci-cli state --robot HOST:PORT [--count N] [--model NAME]
@@ -127,6 +160,8 @@ int runDoctor();                             // rci-cli doctor
 int runBenchLoop(const LoopOptions& options);  // rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep] [--model NAME]
 int runBenchClient(long cycles);             // rci-cli bench client [--cycles N]
 int runBenchRsi(long cycles);                // rci-cli bench rsi [--cycles N]
-int runRun(const RunOptions& options);       // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]
+int runRun(const RunOptions& options);
+// rci-cli guide --robot rsi:ETHERNET.xml --model NAME --sensor HOST[:PORT] [--axes A] [--tool-mass KG] ...
+int runGuide(const GuideOptions& options);       // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]
 
 }  // namespace rci_cli

@@ -134,44 +134,6 @@ int replay(const RunOptions& o, const Program& program,
   }
 }
 
-// The RSI context beside `config_path` whose ETHERNET object names that file.
-std::string contextNaming(const std::string& config_path) {
-  namespace fs = std::filesystem;
-  const fs::path config = fs::weakly_canonical(config_path);
-  std::vector<std::string> found;
-  std::error_code error;
-  for (const fs::directory_entry& entry : fs::directory_iterator(config.parent_path(), error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() < 8 || name.compare(name.size() - 8, 8, ".rsi.xml") != 0) continue;
-    try {
-      if (fs::weakly_canonical(xmate::rsi::readContext(entry.path().string()).ethernetConfigPath()) == config)
-        found.push_back(entry.path().string());
-    } catch (const std::exception&) {
-      // Not a context we can read: not the one.
-    }
-  }
-  if (found.size() == 1) return found.front();
-  throw std::runtime_error(
-      (found.empty() ? "no RSI context (NAME.rsi.xml) beside " + config_path + " names it"
-                     : std::to_string(found.size()) + " RSI contexts beside " + config_path + " name it") +
-      "; give the one the robot runs with --context NAME.rsi.xml (its AXISCORR limits bound every motion)");
-}
-
-// Waits (at most a minute) until the robot sends; says what to do meanwhile.
-void waitForRsi(const xmate::rsi::Link& link, const xmate::rsi::JointStream& stream, const std::string& where) {
-  std::printf("waiting for the robot on %s -- start the KRL program with RSI_ON and RSI_MOVECORR\n", where.c_str());
-  std::fflush(stdout);
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  xmate::rsi::StreamState s;
-  while (!(link.receiving() && stream.state(s))) {
-    if (std::chrono::steady_clock::now() > end || g_interrupted.load())
-      throw std::runtime_error("no <Rob> datagram arrived on " + where +
-                               " within 60 s: check that the KRL program runs RSI_ON, that IP_NUMBER and PORT in "
-                               "the Ethernet config name this PC, and that no firewall blocks the port");
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-}
-
 // A KUKA over RSI: the link and joint stream on this PC, and for rsi-sim a simulated KRC.
 int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::RobotSpec& spec) {
   using namespace xmate;
@@ -208,7 +170,7 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
   }
   const std::string where = (arm_config.link.bind_ip.empty() ? config.ip : arm_config.link.bind_ip) + ":" +
                             std::to_string(link.port());
-  waitForRsi(link, stream, where);
+  waitForRsi(link, stream, where, g_interrupted);
   std::printf("running %s (%zu instructions, %s) over RSI on %s%s, %d ms cycle, context %s, at %.0f %% speed\n",
               o.program_path.c_str(), program.instructions.size(), std::string(spec.display_name).c_str(),
               where.c_str(), simulated ? " (in-process simulated KRC)" : "", o.cycle_ms,

@@ -56,7 +56,7 @@ std::string explain(const CLI::ParseError& e, const CLI::App& app, const CLI::Ap
     const std::string first = unexpectedArguments(what).front();
     if (!first.empty() && first[0] == '-')
       return (name.empty() ? "" : name + ": ") + "unknown option '" + first + "'";
-    if (command == &app) return "unknown command '" + first + "' (known: model, state, run, doctor, bench, ft, help)";
+    if (command == &app) return "unknown command '" + first + "' (known: model, state, run, guide, doctor, bench, ft, help)";
     if (name == "bench") return "unknown bench '" + first + "' (known: loop, client, rsi)";
     return name + ": unexpected argument '" + first + "'";
   }
@@ -132,19 +132,9 @@ int main(int argc, char** argv) {
   run->add_option("--cycle-ms", run_options.cycle_ms, "RSI: the robot's cycle, 4 (RSI_ON with #IPO_FAST) or 12")
       ->type_name("MS")
       ->check(CLI::IsMember({4, 12}));
-  run->add_option("--speed", run_options.speed, "speed override from 0.1 to 1.0 (default 1.0)")
-      ->type_name("R")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            try {
-              size_t end = 0;
-              const double v = std::stod(text, &end);
-              if (end == text.size() && v >= 0.1 && v <= 1.0) return std::string();
-            } catch (const std::exception&) {
-            }
-            return "takes a speed override from 0.1 to 1.0 (e.g. 0.5 = 50 %), got '" + text + "'";
-          },
-          ""));
+  addDecimalOption(*run, "--speed", run_options.speed, 0.1, 1.0, "a speed override from 0.1 to 1.0 (e.g. 0.5 = 50 %)",
+                   "speed override from 0.1 to 1.0 (default 1.0)")
+      ->type_name("R");
   run->add_option("--report", run_options.report_path, "write the run report (JSON) to FILE")
       ->type_name("FILE")
       ->check(CLI::Validator(
@@ -178,6 +168,42 @@ int main(int argc, char** argv) {
   addWholeNumberOption(*ft, "--count", ft_options.count, 1, 100'000'000, "stop after N samples (default: until Ctrl-C)");
   ft->add_option("--counts-per-unit", ft_options.counts_per_unit,
                  "counts per N and per Nm, as the sensor is configured (default 1000000)")
+      ->type_name("C")
+      ->check(CLI::PositiveNumber);
+
+  GuideOptions guide_options;
+  CLI::App* guide = app.add_subcommand(
+      "guide", "hand-guide a KUKA over RSI through the force/torque sensor on its flange (docs/guiding.md)");
+  addRobotOption(*guide, guide_options.robot, false, "rsi:ETHERNET.xml: the KUKA's RSI Ethernet config", true)
+      ->required();
+  addModelNameOption(*guide, guide_options.model_name, "the KUKA arm: kr6_r900_sixx or kr16_2")->required();
+  addSensorOption(*guide, guide_options.sensor)->required();
+  addRsiListenOptions(*guide, guide_options.listen);
+  guide->add_option("--context", guide_options.context_path,
+                    "the RSI context (NAME.rsi.xml) the robot runs, for its correction limits (default: the one "
+                    "beside the Ethernet config that names it)")
+      ->type_name("FILE");
+  guide->add_option("--cycle-ms", guide_options.cycle_ms, "the robot's cycle, 4 (RSI_ON with #IPO_FAST) or 12")
+      ->type_name("MS")
+      ->check(CLI::IsMember({4, 12}));
+  guide->add_option("--axes", guide_options.axes, "what the hand may move: translation (default), rotation or free")
+      ->type_name("AXES")
+      ->check(CLI::IsMember({"translation", "rotation", "free"}));
+  addDecimalOption(*guide, "--tool-mass", guide_options.tool_mass, 0, 50, "a tool mass from 0 to 50 kg",
+                   "mass of the tool below the sensor, kg (its weight is removed from every reading; default 0)")
+      ->type_name("KG");
+  guide->add_option("--tool-center", guide_options.tool_center,
+                    "the tool's centre of mass in the flange frame, m (default 0,0,0)")
+      ->type_name("X,Y,Z")
+      ->delimiter(',')
+      ->expected(3);
+  addDecimalOption(*guide, "--max-speed", guide_options.max_speed, 0.01, 1.0, "a speed from 0.01 to 1.0 m/s",
+                   "the flange's speed cap, m/s (default 0.25)")
+      ->type_name("M/S");
+  addWholeNumberOption(*guide, "--seconds", guide_options.seconds, 1, 86'400, "stop after S seconds (default: Ctrl-C)")
+      ->type_name("S");
+  guide->add_option("--counts-per-unit", guide_options.sensor.counts_per_unit,
+                    "the sensor's counts per N and per Nm (default 1000000)")
       ->type_name("C")
       ->check(CLI::PositiveNumber);
 
@@ -215,10 +241,16 @@ int main(int argc, char** argv) {
     }
     // Commands that talk to a controller pin the whole process in RAM (the library locks only its
     // real-time thread's memory); refused without privileges, reported by the session then.
-    if (state->parsed() || run->parsed() || loop->parsed() || client->parsed() || rsi_bench->parsed())
+    if (state->parsed() || run->parsed() || guide->parsed() || loop->parsed() || client->parsed() ||
+        rsi_bench->parsed())
       xmate::net::lockAllMemory();
     if (state->parsed()) return state_options.robot.rsi ? runStateRsi(state_options) : runState(state_options);
     if (run->parsed()) return runRun(run_options);
+    if (guide->parsed()) {
+      if (!guide_options.robot.rsi || guide_options.robot.rsi_config.empty())
+        throw UsageError("--robot: guide takes rsi:ETHERNET.xml, the KUKA's Ethernet config");
+      return runGuide(guide_options);
+    }
     if (doctor->parsed()) return runDoctor();
     if (ft->parsed()) return runFt(ft_options);
     if (loop->parsed()) return runBenchLoop(loop_options);

@@ -2,9 +2,9 @@
 // Hand guiding a KUKA through the F/T sensor, end to end: the simulated KRC (lock-step) pushed by a
 // wrench its simulated sensor reads, ft::NetFtClient, arm::RsiArm and guide::AdmittanceGuide. A push
 // moves the flange along it (translation: the orientation stays), a twist turns it (rotation: the
-// position stays), a push inside the dead band moves nothing, releasing brings it to rest, the
-// operator's stop ends it, a silent sensor ends it saying so; the tool's weight is removed at any
-// pose.
+// position stays), a push inside the dead band moves nothing, releasing brings it to rest, at the
+// edge of the reach it holds still, the operator's stop ends it, a silent sensor ends it saying so;
+// the tool's weight is removed at any pose.
 #include <QtTest>
 
 #include <chrono>
@@ -148,6 +148,7 @@ class TestAdmittance : public QObject {
   void toolWeightIsRemovedAtAnyPose();
   void pushMovesTheFlangeAlongIt();
   void twistTurnsTheFlangeInPlace();
+  void atTheEdgeOfReachItHoldsStill();
   void silentSensorEndsTheGuideSayingSo();
 };
 
@@ -215,6 +216,28 @@ void TestAdmittance::twistTurnsTheFlangeInPlace() {
   const std::array<double, 16> end = cell.flange();
   QVERIFY2(distance(end, start) < 0.002, qPrintable(QString::number(distance(end, start))));
   QVERIFY(turn(end, start) > 0.1);
+}
+
+// Pushed outwards until the arm cannot keep its orientation and go further, it holds still there
+// (rather than let the flange drift down) and says so; pushed back, it follows again.
+void TestAdmittance::atTheEdgeOfReachItHoldsStill() {
+  Cell cell;
+  QVERIFY(cell.ready());
+  const NetFtSource source(*cell.ft);
+  const std::array<double, 16> start = cell.flange();
+  Guiding g(cell, source, GuideParameters{});
+  QVERIFY(g.started());
+  cell.push({30, 0, 0, 0, 0, 0});
+  QVERIFY(waitFor([&] { return g.guide.status().cannot_follow; }));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const std::array<double, 16> edge = cell.flange();
+  QVERIFY2(edge[3] - start[3] > 0.1, qPrintable(QString::number(edge[3] - start[3])));
+  QVERIFY2(std::hypot(edge[7] - start[7], edge[11] - start[11]) < 0.002,
+           qPrintable(QString("%1 %2").arg(edge[7] - start[7]).arg(edge[11] - start[11])));
+  QVERIFY(turn(edge, start) < 0.005);
+  cell.push({-30, 0, 0, 0, 0, 0});
+  QVERIFY(waitFor([&] { return edge[3] - cell.flange()[3] > 0.02; }));
+  QVERIFY(!g.guide.status().cannot_follow);
 }
 
 void TestAdmittance::silentSensorEndsTheGuideSayingSo() {

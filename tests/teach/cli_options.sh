@@ -39,7 +39,7 @@ expect 2 "--model: unknown model 'ur5'; choose one of: xmate3_pro, xmate7_pro, x
 expect 2 "NAME: unknown model 'xmate9'" model xmate9
 # Unknown options and commands, extra arguments.
 expect 2 "state: unknown option '--frobnicate'" state --robot 127.0.0.1:1 --frobnicate
-expect 2 "unknown command 'frob' (known: model, state, run, doctor, bench, ft, help)" frob
+expect 2 "unknown command 'frob' (known: model, state, run, guide, doctor, bench, ft, help)" frob
 expect 2 "unknown bench 'fast' (known: loop, client, rsi)" bench fast
 expect 2 "model: unexpected argument 'xmate3'" model xmate7 xmate3
 # Missing values and missing required arguments.

@@ -16,6 +16,7 @@ namespace {
 
 constexpr double kGravity = 9.80665;          // m/s^2, along -z of the base
 constexpr double kDampingLambda = 0.01;       // damped least squares near singular poses
+constexpr double kFollowTolerance = 0.1;      // the flange may move 10 % off the pushed direction
 constexpr double kRestLinear = 1e-4;          // m/s: "at rest"
 constexpr double kRestAngular = 1e-3;         // rad/s
 constexpr double kRangeMargin = 0.5 * 3.14159265358979323846 / 180.0;  // keep half a degree off the hard ranges
@@ -145,6 +146,24 @@ bool AdmittanceGuide::command(const arm::ArmSample& now, std::array<double, 7>& 
   const Eigen::Matrix<double, 6, 6> jjt =
       j * j.transpose() + kDampingLambda * kDampingLambda * Eigen::Matrix<double, 6, 6>::Identity();
   Eigen::Matrix<double, 7, 1> dq = j.transpose() * jjt.ldlt().solve(v);
+  // Near the edge of the reach or a singular pose the damped inverse moves the flange elsewhere than
+  // it is pushed: hold still there rather than drift -- unless the step leads away from that pose
+  // (the arm's manipulability grows), so the operator can always pull it back.
+  const Eigen::Matrix<double, 6, 1> miss = j * dq - v;
+  const bool off_course = miss.head<3>().norm() > kFollowTolerance * v.head<3>().norm() + 1e-4 ||
+                          miss.tail<3>().norm() > kFollowTolerance * v.tail<3>().norm() + 1e-3;
+  now_.cannot_follow = false;
+  if (off_course) {
+    std::array<double, 7> ahead = q_;
+    for (int i = 0; i < 7; ++i) ahead[size_t(i)] += dq[i] * dt_;
+    const std::array<double, 42> jacobian_ahead = model_.Jacobian(ahead);
+    const Eigen::Map<const Eigen::Matrix<double, 6, 7, Eigen::RowMajor>> j_ahead(jacobian_ahead.data());
+    now_.cannot_follow = (j_ahead * j_ahead.transpose()).determinant() <= (j * j.transpose()).determinant();
+  }
+  if (now_.cannot_follow) {
+    dq.setZero();
+    velocity_ = {};
+  }
   const model::RobotSpec& spec = model_.spec();
   double scale = 1;
   for (int i = 0; i < spec.dof; ++i) {

@@ -64,6 +64,8 @@ struct GuideStatus {
   std::array<double, 6> wrench{};  // the force and torque it acts on: bias and tool removed, base frame, N and Nm
   std::array<double, 6> velocity{};  // of the flange, base frame, m/s and rad/s
   int limited_axis = -1;           // an axis held at its range or bound this cycle (0-based), -1 none
+  bool cannot_follow = false;      // the arm cannot move the way it is pushed here (the edge of its
+                                   // reach, a singular pose): it holds still
   GuideEnd end = GuideEnd::kRunning;  // while it brakes to its end, already why
 };
 
