@@ -177,7 +177,7 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
               std::filesystem::path(context_path).filename().c_str(), o.speed * 100);
   std::fflush(stdout);
   const int status = replay(o, program, [&](Executor& executor, const ExecutorOptions& options) {
-    return executor.run(stream, arm.digitalIo(), program, options);
+    return executor.run(arm, program, options);
   });
   if (krc) krc->stop();
   arm.stop();

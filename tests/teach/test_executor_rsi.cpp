@@ -36,8 +36,6 @@ const model::RobotSpec& kr6() { return *model::findRobotSpec("kr6_r900_sixx"); }
 // The PC side and a simulated KRC running `context` on loopback.
 struct Cell {
   std::unique_ptr<arm::RsiArm> arm;  // as rci-cli run: link, joint stream and the wired IO
-  rsi::JointStream* stream = nullptr;
-  rsi::DigitalIo* io = nullptr;
   std::unique_ptr<sim::KrcServer> krc;
 
   explicit Cell(const std::string& context) {
@@ -49,8 +47,6 @@ struct Cell {
     config.link.realtime = false;
     config.link.silence_ms = 200;
     arm = std::make_unique<arm::RsiArm>(config);
-    stream = &arm->stream();
-    io = arm->digitalIo();
     arm->start();
     sim::KrcServerConfig k;
     k.krc.context_path = dataPath(context);
@@ -62,7 +58,7 @@ struct Cell {
     // As rci-cli run does: the program starts once RSI runs.
     rsi::StreamState s;
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    while (!stream->state(s) && std::chrono::steady_clock::now() < end)
+    while (!arm->stream().state(s) && std::chrono::steady_clock::now() < end)
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   ~Cell() {
@@ -151,7 +147,7 @@ void TestExecutorRsi::programReachesItsTargets() {
   p.instructions.push_back(moveJ(jointsTarget(home), 1.0, "home"));
 
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
+  const RunReport report = executor.run(*cell.arm, p, {});
   QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
   const std::array<std::array<double, 7>, 4> expected{j1, l2, c3, home};
   for (size_t i = 0; i < expected.size(); ++i) {
@@ -174,7 +170,7 @@ void TestExecutorRsi::beyondTheCorrectionLimitIsRefusedBeforeMoving() {
   p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 0, 0})), 0.5, "near"));
   p.instructions.push_back(moveJ(jointsTarget(offset(home, {3, 0, 0, 0, 12, 0})), 0.5, "far"));
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
+  const RunReport report = executor.run(*cell.arm, p, {});
   QCOMPARE(report.outcome, RunState::kFailed);
   QCOMPARE(report.failed_instruction, 1L);
   const QString message = QString::fromStdString(report.message);
@@ -195,7 +191,7 @@ void TestExecutorRsi::rsiGoingOffFailsTheMotion() {
     waitForFraction(executor, 0.2);
     cell.krc->krc().suspendSending(3000);  // RSI off without a timeout, e.g. the KRL program ended
   });
-  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
+  const RunReport report = executor.run(*cell.arm, p, {});
   operator_thread.join();
   QCOMPARE(report.outcome, RunState::kFailed);
   QVERIFY2(QString::fromStdString(report.message).startsWith("instruction 1 (MOVEJ \"slow\"): RSI stopped during the motion"),
@@ -214,7 +210,7 @@ void TestExecutorRsi::stopBrakesAndEndsTheRun() {
     waitForFraction(executor, 0.3);
     executor.stop();
   });
-  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
+  const RunReport report = executor.run(*cell.arm, p, {});
   operator_thread.join();
   QVERIFY2(report.outcome == RunState::kStopped, report.message.c_str());
   QCOMPARE(report.instructions[0].status, InstructionStatus::kStopped);
@@ -250,7 +246,7 @@ void TestExecutorRsi::digitalSignalsGoThroughTheContext() {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));  // it is waiting now
     cell.krc->krc().setDigitalInput(2, true);
   });
-  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
+  const RunReport report = executor.run(*cell.arm, p, {});
   operator_thread.join();
   QCOMPARE(report.instructions[0].status, InstructionStatus::kDone);
   QCOMPARE(report.instructions[1].status, InstructionStatus::kDone);
@@ -265,7 +261,7 @@ void TestExecutorRsi::digitalSignalsGoThroughTheContext() {
 
 void TestExecutorRsi::withoutWiredSignalsSetDoSaysSo() {
   Cell cell("resources/rsi/rci_axis_corr.rsi.xml");  // no DIGIN / DIGOUT
-  QVERIFY(!cell.io);
+  QVERIFY(!cell.arm->digitalIo());
   Program p = kukaProgram();
   Instruction on;
   on.type = InstructionType::kSetDo;
@@ -273,7 +269,7 @@ void TestExecutorRsi::withoutWiredSignalsSetDoSaysSo() {
   on.value = true;
   p.instructions = {on};
   Executor executor;
-  const RunReport report = executor.run(*cell.stream, cell.io, p, {});
+  const RunReport report = executor.run(*cell.arm, p, {});
   QCOMPARE(report.outcome, RunState::kFailed);
   QVERIFY2(QString::fromStdString(report.message).contains("the RSI context wires no digital inputs or outputs to the PC"),
            report.message.c_str());

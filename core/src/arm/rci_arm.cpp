@@ -7,7 +7,7 @@
 
 #include "client/connection.h"
 #include "model/robot_spec.h"
-#include "teach/program.h"
+#include "model/signal_names.h"
 
 namespace xmate::arm {
 namespace {
@@ -28,13 +28,13 @@ ArmSample sampleOf(const RobotState& s) {
 
 std::vector<std::string> names(bool output) {
   std::vector<std::string> list;
-  for (int i = 0; i < teach::kXmateSignalCount; ++i)
-    list.push_back(output ? teach::doName(model::RobotFamily::kXmate, i) : teach::diName(model::RobotFamily::kXmate, i));
+  for (int i = 0; i < model::kXmateSignalCount; ++i)
+    list.push_back(output ? model::doName(model::RobotFamily::kXmate, i) : model::diName(model::RobotFamily::kXmate, i));
   return list;
 }
 
 void checkSignal(size_t index, const char* kind) {
-  if (index >= size_t(teach::kXmateSignalCount))
+  if (index >= size_t(model::kXmateSignalCount))
     throw std::runtime_error(std::string("the xMate has six digital ") + kind + "s (0 to 5); " + std::to_string(index) +
                              " is not one");
 }

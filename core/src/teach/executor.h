@@ -21,8 +21,10 @@
 #include "teach/program.h"
 #include "teach/time_scaling.h"
 
+namespace xmate::arm {
+class RsiArm;
+}
 namespace xmate::rsi {
-class DigitalIo;
 class JointStream;
 }
 
@@ -111,12 +113,11 @@ class Executor {
   // Runs the program on `robot` to its end (blocking, on the calling thread). Throws nothing for
   // run-time failures (they are in the report); std::logic_error when another run() is active.
   RunReport run(Robot& robot, const Program& program, const ExecutorOptions& options = {});
-  // The same on a KUKA over RSI: motions are streamed as axis corrections through `stream`, whose
-  // link is running (executor_rsi.cpp); SET_DO and WAIT_DI go through `io` (nullptr: the program
-  // fails at the first of them, saying the context wires no IO). The options' soft limits and box
-  // apply to the pre-flight.
-  RunReport run(rsi::JointStream& stream, rsi::DigitalIo* io, const Program& program,
-                const ExecutorOptions& options = {});
+  // The same on a KUKA over RSI, whose link is running: motions are streamed as axis corrections
+  // through its joint stream (executor_rsi.cpp); SET_DO and WAIT_DI reach the signals its context
+  // wires to the PC (none wired: the program fails at the first of them, saying so). The options'
+  // soft limits and box apply to the pre-flight.
+  RunReport run(arm::RsiArm& arm, const Program& program, const ExecutorOptions& options = {});
 
   // ---- Thread-safe controls (any thread, any time; no effect when not running) ----------------
   void pause();                       // smooth stop on the path; holds until resume()/stop()

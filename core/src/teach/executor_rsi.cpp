@@ -15,6 +15,7 @@
 
 #include "client/move_check.h"
 #include "planning/joint_line.h"
+#include "arm/rsi_arm.h"
 #include "rsi/digital_io.h"
 #include "rsi/joint_stream.h"
 #include "teach/executor.h"
@@ -106,10 +107,9 @@ double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6
 
 }  // namespace
 
-RunReport Executor::run(rsi::JointStream& stream, rsi::DigitalIo* io, const Program& program,
-                        const ExecutorOptions& options) {
-  RsiPort port(stream, io, program.has_tool ? program.tool : kIdentityPose);
-  return runOn(port, nullptr, &stream, program, options);
+RunReport Executor::run(arm::RsiArm& arm, const Program& program, const ExecutorOptions& options) {
+  RsiPort port(arm.stream(), arm.digitalIo(), program.has_tool ? program.tool : kIdentityPose);
+  return runOn(port, nullptr, &arm.stream(), program, options);
 }
 
 void Executor::runRsiMotion(const Program& program, size_t index, InstructionReport& report) {

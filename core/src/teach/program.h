@@ -12,6 +12,7 @@
 #include <xmate/types.h>
 
 #include "model/robot_spec.h"
+#include "model/signal_names.h"
 
 namespace xmate::teach {
 
@@ -64,17 +65,14 @@ struct Program {
   std::vector<Instruction> instructions;
 };
 
-// The digital signals a program names, by robot family. An xMate: "DO0_0".."DO1_1" /
-// "DI0_0".."DI1_1", index 0..5 (RCI's DOSIGNAL / DISIGNAL order). A KUKA: "$OUT[n]" / "$IN[n]",
-// index n = 1..4096 (the controller's numbers; over RSI, those the context wires to the PC).
-inline constexpr int kXmateSignalCount = 6;
-inline constexpr int kKukaSignalCount = 4096;
-std::string doName(model::RobotFamily family, int index);
-std::string diName(model::RobotFamily family, int index);
-int doIndex(model::RobotFamily family, const std::string& name);  // -1 if not a signal of that family
-int diIndex(model::RobotFamily family, const std::string& name);
-// "DO0_0, DO0_1, ..." / "$OUT[1] to $OUT[4096]": the names doIndex / diIndex take, for messages.
-std::string knownSignals(model::RobotFamily family, bool output);
+// The digital signals a program names: model/signal_names.h.
+using model::diIndex;
+using model::diName;
+using model::doIndex;
+using model::doName;
+using model::kKukaSignalCount;
+using model::kXmateSignalCount;
+using model::knownSignals;
 
 // "instruction 3 (MOVEL \"P3\")": how messages name an instruction (1-based).
 std::string describe(const Program& program, size_t index);
