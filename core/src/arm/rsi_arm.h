@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // arm::RsiArm: a KUKA over RSI as an arm::Arm -- the link, the joint stream and the digital IO of
-// one RSI context and its Ethernet config. docs/rsi.md, "A KUKA as an arm".
+// one RSI context and its Ethernet config. docs/architecture.md, "One interface for both robot
+// families".
 #pragma once
 
 #include <array>
