@@ -175,7 +175,8 @@ int main(int argc, char** argv) {
   CLI::App* guide = app.add_subcommand(
       "guide", "hand-guide a KUKA over RSI through the force/torque sensor on its flange (docs/guiding.md)");
   addRobotOption(*guide, guide_options.robot, false, "rsi:ETHERNET.xml: the KUKA's RSI Ethernet config", true)
-      ->required();
+      ->required()
+      ->type_name("rsi:FILE");
   addModelNameOption(*guide, guide_options.model_name, "the KUKA arm: kr6_r900_sixx or kr16_2")->required();
   addSensorOption(*guide, guide_options.sensor)->required();
   addRsiListenOptions(*guide, guide_options.listen);

@@ -90,6 +90,11 @@ expect 2 "--cycles takes a whole number from 100 to 100000000, got '5'" bench rs
 expect 1 "x.xml: cannot open" state --robot rsi:x.xml --model kr16_2
 expect 0 "--wait S" state --help
 expect 0 "tinyxml2" bench rsi --help
+# guide: a KUKA over RSI only; its decimal options in range.
+expect 2 "--robot: guide takes rsi:ETHERNET.xml, the KUKA's Ethernet config" guide --robot 127.0.0.1:1 --model kr16_2 --sensor 127.0.0.1
+expect 2 "--max-speed takes a speed from 0.01 to 1.0 m/s, got '5'" guide --robot rsi:x.xml --model kr16_2 --sensor 127.0.0.1 --max-speed 5
+expect 2 "--axes" guide --robot rsi:x.xml --model kr16_2 --sensor 127.0.0.1 --axes sideways
+
 # The default and a model, with --opt=value and --opt value (no robot needed).
 expect 0 "xMate Pro 7 (xmate7_pro), 7 axes"
 expect 0 "xMate 3 (xmate3), 6 axes" model xmate3
