@@ -187,6 +187,13 @@ CLI::Option* addModelNameOption(CLI::App& command, std::string& name, const std:
   }));
 }
 
+void addRsiContextOptions(CLI::App& command, std::string& context_path, int& cycle_ms, const std::string& context_help) {
+  command.add_option("--context", context_path, context_help)->type_name("FILE");
+  command.add_option("--cycle-ms", cycle_ms, "RSI: the robot's cycle, 4 (RSI_ON with #IPO_FAST) or 12")
+      ->type_name("MS")
+      ->check(CLI::IsMember({4, 12}));
+}
+
 void addRsiListenOptions(CLI::App& command, RsiListen& listen) {
   command.add_option("--bind", listen.bind_ip, "RSI: listen on this address of the PC instead of the config's IP_NUMBER")
       ->type_name("ADDR")

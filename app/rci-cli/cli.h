@@ -75,6 +75,8 @@ struct RsiListen {
 };
 // --bind ADDR and --port P, for `state` and `run` over RSI.
 void addRsiListenOptions(CLI::App& command, RsiListen& listen);
+//   --context FILE (help: `context_help`) and --cycle-ms 4|12, for commands that drive a KUKA.
+void addRsiContextOptions(CLI::App& command, std::string& context_path, int& cycle_ms, const std::string& context_help);
 
 struct StateOptions {
   RobotTarget robot;  // never in_process; rsi: a KUKA arm over RSI (cmd_state_rsi.cpp), never rsi-sim

@@ -125,13 +125,9 @@ int main(int argc, char** argv) {
       ->required();
   addModelNameOption(*run, run_options.model_name, "the robot's model when it is not the program's (a mismatch is refused)");
   addRsiListenOptions(*run, run_options.listen);
-  run->add_option("--context", run_options.context_path,
-                  "RSI: the RSI context (NAME.rsi.xml) the robot runs, for its correction limits (default: the one "
-                  "beside the Ethernet config that names it; rsi-sim: resources/rsi/rci_replay.rsi.xml)")
-      ->type_name("FILE");
-  run->add_option("--cycle-ms", run_options.cycle_ms, "RSI: the robot's cycle, 4 (RSI_ON with #IPO_FAST) or 12")
-      ->type_name("MS")
-      ->check(CLI::IsMember({4, 12}));
+  addRsiContextOptions(*run, run_options.context_path, run_options.cycle_ms,
+                       "RSI: the RSI context (NAME.rsi.xml) the robot runs, for its correction limits (default: the "
+                       "one beside the Ethernet config that names it; rsi-sim: resources/rsi/rci_replay.rsi.xml)");
   addDecimalOption(*run, "--speed", run_options.speed, 0.1, 1.0, "a speed override from 0.1 to 1.0 (e.g. 0.5 = 50 %)",
                    "speed override from 0.1 to 1.0 (default 1.0)")
       ->type_name("R");
@@ -180,13 +176,9 @@ int main(int argc, char** argv) {
   addModelNameOption(*guide, guide_options.model_name, "the KUKA arm: kr6_r900_sixx or kr16_2")->required();
   addSensorOption(*guide, guide_options.sensor)->required();
   addRsiListenOptions(*guide, guide_options.listen);
-  guide->add_option("--context", guide_options.context_path,
-                    "the RSI context (NAME.rsi.xml) the robot runs, for its correction limits (default: the one "
-                    "beside the Ethernet config that names it)")
-      ->type_name("FILE");
-  guide->add_option("--cycle-ms", guide_options.cycle_ms, "the robot's cycle, 4 (RSI_ON with #IPO_FAST) or 12")
-      ->type_name("MS")
-      ->check(CLI::IsMember({4, 12}));
+  addRsiContextOptions(*guide, guide_options.context_path, guide_options.cycle_ms,
+                       "RSI: the RSI context (NAME.rsi.xml) the robot runs, for its correction limits (default: the "
+                       "one beside the Ethernet config that names it)");
   guide->add_option("--axes", guide_options.axes, "what the hand may move: translation (default), rotation or free")
       ->type_name("AXES")
       ->check(CLI::IsMember({"translation", "rotation", "free"}));

@@ -15,29 +15,20 @@
 #include "arm/rci_arm.h"
 #include "arm/rsi_arm.h"
 #include "client_test_support.h"
+#include "../rsi/rsi_test_support.h"
 #include "model/arm_kinematics.h"
 #include "sim/krc_server.h"
 
 using namespace xmate;
 using namespace xmate::arm;
 using namespace client_test;
+using xmate::rsi::testing::krcFor;
+using xmate::rsi::testing::loopbackArm;
+using xmate::rsi::testing::waitFor;
 
 namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
-
-std::string dataPath(const std::string& relative) {
-  return qEnvironmentVariable("RCI_DATA_DIR").toStdString() + "/" + relative;
-}
-
-bool waitFor(const std::function<bool()>& condition, int limit_ms = 10000) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(limit_ms);
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > end) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return true;
-}
 
 // Joint `axis` by `delta` (rad) from wherever the motion starts, on a smooth (cosine) profile of
 // `cycles` controller cycles, then one more cycle holding the end.
@@ -136,23 +127,10 @@ void TestArm::anXmate() {
 }
 
 void TestArm::aKuka() {
-  RsiArmConfig config;
-  config.context_path = dataPath("resources/rsi/rci_replay.rsi.xml");
-  config.model = "kr6_r900_sixx";
-  config.link.bind_ip = "127.0.0.1";
-  config.link.port = 0;
-  config.link.realtime = false;
-  config.link.silence_ms = 2000;
+  const RsiArmConfig config = loopbackArm("resources/rsi/rci_replay.rsi.xml", 2000);
   RsiArm arm(config);
   arm.start();
-  sim::KrcServerConfig k;
-  k.krc.context_path = config.context_path;
-  k.krc.model = config.model;
-  k.target_ip = "127.0.0.1";
-  k.target_port = arm.link().port();
-  k.lockstep = true;  // the KRC's cycles follow the answers: repeatable under load
-  k.lockstep_timeout_ms = 500;
-  sim::KrcServer krc(k);
+  sim::KrcServer krc(krcFor(config, arm.link().port(), true));  // lock-step: repeatable under load
   krc.start();
   QCOMPARE(arm.spec().name, std::string_view("kr6_r900_sixx"));
   const Capabilities c = arm.capabilities();

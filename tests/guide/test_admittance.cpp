@@ -16,27 +16,18 @@
 #include "ft/netft.h"
 #include "guide/admittance.h"
 #include "guide/ft_source.h"
+#include "../rsi/rsi_test_support.h"
 #include "model/arm_kinematics.h"
 #include "sim/ft_sensor.h"
 #include "sim/krc_server.h"
 
 using namespace xmate;
 using namespace xmate::guide;
+using xmate::rsi::testing::krcFor;
+using xmate::rsi::testing::loopbackArm;
+using xmate::rsi::testing::waitFor;
 
 namespace {
-
-std::string dataPath(const std::string& relative) {
-  return qEnvironmentVariable("RCI_DATA_DIR").toStdString() + "/" + relative;
-}
-
-bool waitFor(const std::function<bool()>& condition, int limit_ms = 15000) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(limit_ms);
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > end) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
 
 // A KUKA cell: the PC's arm, a simulated KRC in lock-step with its F/T sensor, and the sensor client.
 struct Cell {
@@ -46,24 +37,12 @@ struct Cell {
   std::unique_ptr<ft::NetFtClient> ft;
 
   Cell() {
-    arm::RsiArmConfig config;
-    config.context_path = dataPath("resources/rsi/rci_replay.rsi.xml");
-    config.model = "kr6_r900_sixx";
-    config.link.bind_ip = "127.0.0.1";
-    config.link.port = 0;
-    config.link.realtime = false;
-    config.link.silence_ms = 2000;
+    const arm::RsiArmConfig config = loopbackArm("resources/rsi/rci_replay.rsi.xml", 2000);
     arm = std::make_unique<arm::RsiArm>(config);
     arm->start();
     sensor = std::make_unique<sim::SimulatedFtSensor>(sim::FtSensorConfig{"127.0.0.1", 0});
     sensor->start();
-    sim::KrcServerConfig k;
-    k.krc.context_path = config.context_path;
-    k.krc.model = config.model;
-    k.target_ip = "127.0.0.1";
-    k.target_port = arm->link().port();
-    k.lockstep = true;
-    k.lockstep_timeout_ms = 500;
+    sim::KrcServerConfig k = krcFor(config, arm->link().port(), true);
     k.ft_sensor = sensor.get();
     krc = std::make_unique<sim::KrcServer>(k);
     krc->start();

@@ -1,14 +1,21 @@
 // SPDX-License-Identifier: Apache-2.0
-// What the RSI tests share: the sample Ethernet config, link options on loopback, and a fake robot
-// that sends <Rob> datagrams from its own port (as a KRC does) and reads each answer.
+// What the RSI tests share: the sample Ethernet config, link options on loopback, a fake robot
+// that sends <Rob> datagrams from its own port (as a KRC does) and reads each answer, and a KUKA
+// cell on loopback (an arm::RsiArm and the simulated KRC sending to it).
 #pragma once
 
 #include <QtGlobal>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
+#include <thread>
+
+#include "arm/rsi_arm.h"
+#include "sim/krc_server.h"
 
 #include "net/udp_socket.h"
 #include "rsi/config.h"
@@ -30,6 +37,40 @@ inline LinkOptions loopback(CorrectionMode mode = CorrectionMode::kAbsolute) {
   o.realtime = false;
   o.silence_ms = 1000;  // a loaded machine may pause between two exchanges; only the test's own pause is silence
   return o;
+}
+
+// Polls `condition` every millisecond for at most `limit_ms`.
+inline bool waitFor(const std::function<bool()>& condition, int limit_ms = 15000) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(limit_ms);
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() > end) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return true;
+}
+
+// A KUKA arm on loopback (a free port, no real-time scheduling) running `context` (a path under the
+// data directory, e.g. "resources/rsi/rci_replay.rsi.xml").
+inline arm::RsiArmConfig loopbackArm(const std::string& context, int silence_ms = 1000,
+                                     const std::string& model = "kr6_r900_sixx") {
+  arm::RsiArmConfig config;
+  config.context_path = dataPath(context);
+  config.model = model;
+  config.link = loopback();
+  config.link.silence_ms = silence_ms;
+  return config;
+}
+
+// The simulated KRC for that arm, sending to `port` (the arm's started link), timed or in lock-step.
+inline sim::KrcServerConfig krcFor(const arm::RsiArmConfig& arm, uint16_t port, bool lockstep) {
+  sim::KrcServerConfig k;
+  k.krc.context_path = arm.context_path;
+  k.krc.model = arm.model;
+  k.target_ip = "127.0.0.1";
+  k.target_port = port;
+  k.lockstep = lockstep;
+  k.lockstep_timeout_ms = 500;
+  return k;
 }
 
 class FakeRobot {

@@ -10,19 +10,14 @@
 #include <thread>
 
 #include "arm/rsi_arm.h"
+#include "rsi_test_support.h"
 #include "rsi/session_monitor.h"
 #include "sim/krc_server.h"
 
 using namespace xmate;
 using namespace xmate::rsi;
+using namespace xmate::rsi::testing;
 
-namespace {
-
-std::string dataPath(const std::string& relative) {
-  return qEnvironmentVariable("RCI_DATA_DIR").toStdString() + "/" + relative;
-}
-
-}  // namespace
 
 class TestSessionMonitor : public QObject {
   Q_OBJECT
@@ -32,12 +27,7 @@ class TestSessionMonitor : public QObject {
 };
 
 void TestSessionMonitor::followsTheSessionAndTellsWhyItStopped() {
-  arm::RsiArmConfig config;
-  config.context_path = dataPath("resources/rsi/rci_replay.rsi.xml");
-  config.model = "kr6_r900_sixx";
-  config.link.bind_ip = "127.0.0.1";
-  config.link.port = 0;
-  config.link.realtime = false;
+  const arm::RsiArmConfig config = loopbackArm("resources/rsi/rci_replay.rsi.xml", 100);
   arm::RsiArm arm(config);
   SessionMonitor monitor(arm.link(), arm.context());
   // The window's tick: take what the link recorded, then ask.
@@ -46,45 +36,36 @@ void TestSessionMonitor::followsTheSessionAndTellsWhyItStopped() {
     while (arm.link().samples().pop(s)) monitor.add(s);
     return monitor.status(arm.link().receiving());
   };
-  auto waitFor = [&](const std::function<bool(const SessionStatus&)>& condition) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(15);
-    while (!condition(status())) {
-      if (std::chrono::steady_clock::now() > end) return false;
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return true;
+  auto waitUntil = [&](const std::function<bool(const SessionStatus&)>& condition) {
+    return waitFor([&] { return condition(status()); });
   };
   QCOMPARE(status().phase, SessionPhase::kWaiting);
   QVERIFY(QString::fromStdString(describe(status())).startsWith("Waiting for the robot"));
   QCOMPARE(status().timeout, 100);  // rci_replay.rsi.xml's ETHERNET1 Timeout
 
   arm.start();
-  sim::KrcServerConfig k;
-  k.krc.context_path = config.context_path;
-  k.krc.model = config.model;
+  sim::KrcServerConfig k = krcFor(config, arm.link().port(), false);  // timed: late answers are late
   k.krc.restart_pause_ms = 300;
-  k.target_ip = "127.0.0.1";
-  k.target_port = arm.link().port();
   sim::KrcServer krc(k);
   krc.start();
-  QVERIFY(waitFor([](const SessionStatus& s) { return s.phase == SessionPhase::kRunning && s.cycle_ms == 4; }));
-  QVERIFY(waitFor([](const SessionStatus& s) { return s.answer_p99_ms > 0; }));
+  QVERIFY(waitUntil([](const SessionStatus& s) { return s.phase == SessionPhase::kRunning && s.cycle_ms == 4; }));
+  QVERIFY(waitUntil([](const SessionStatus& s) { return s.answer_p99_ms > 0; }));
   QCOMPARE(status().session, 1u);
   QVERIFY(QString::fromStdString(describe(status())).startsWith("RSI running, 4 ms cycle"));
 
   krc.krc().dropAnswers(150);  // every answer counts late: RSITimeout after 100
-  QVERIFY(waitFor([](const SessionStatus& s) { return s.phase == SessionPhase::kStopped; }));
+  QVERIFY(waitUntil([](const SessionStatus& s) { return s.phase == SessionPhase::kStopped; }));
   SessionStatus stopped = status();
   QCOMPARE(stopped.cause, StopCause::kTimeout);
   QVERIFY2(stopped.delay >= 100, qPrintable(QString::number(stopped.delay)));
   QVERIFY2(QString::fromStdString(describe(stopped)).contains("until its limit of 100 (RSITimeout)"),
            describe(stopped).c_str());
   // The KRL program starts RSI again: a new session, running.
-  QVERIFY(waitFor([](const SessionStatus& s) { return s.phase == SessionPhase::kRunning && s.session == 2; }));
+  QVERIFY(waitUntil([](const SessionStatus& s) { return s.phase == SessionPhase::kRunning && s.session == 2; }));
   QCOMPARE(status().cause, StopCause::kNone);
 
   krc.krc().suspendSending(1000);  // RSI_OFF without late answers
-  QVERIFY(waitFor([](const SessionStatus& s) { return s.phase == SessionPhase::kStopped; }));
+  QVERIFY(waitUntil([](const SessionStatus& s) { return s.phase == SessionPhase::kStopped; }));
   stopped = status();
   QCOMPARE(stopped.cause, StopCause::kByController);
   QVERIFY(QString::fromStdString(describe(stopped)).startsWith("RSI stopped by the controller"));

@@ -13,6 +13,7 @@
 
 #include "model/arm_kinematics.h"
 #include "model/robot_spec.h"
+#include "../rsi/rsi_test_support.h"
 #include "arm/rsi_arm.h"
 #include "rsi/joint_stream.h"
 #include "rsi/link.h"
@@ -27,10 +28,6 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-std::string dataPath(const std::string& relative) {
-  return qEnvironmentVariable("RCI_DATA_DIR").toStdString() + "/" + relative;
-}
-
 const model::RobotSpec& kr6() { return *model::findRobotSpec("kr6_r900_sixx"); }
 
 // The PC side and a simulated KRC running `context` on loopback.
@@ -39,21 +36,10 @@ struct Cell {
   std::unique_ptr<sim::KrcServer> krc;
 
   explicit Cell(const std::string& context) {
-    arm::RsiArmConfig config;
-    config.context_path = dataPath(context);
-    config.model = "kr6_r900_sixx";
-    config.link.bind_ip = "127.0.0.1";
-    config.link.port = 0;  // a free port
-    config.link.realtime = false;
-    config.link.silence_ms = 200;
+    const arm::RsiArmConfig config = rsi::testing::loopbackArm(context, 200);
     arm = std::make_unique<arm::RsiArm>(config);
     arm->start();
-    sim::KrcServerConfig k;
-    k.krc.context_path = dataPath(context);
-    k.krc.model = "kr6_r900_sixx";
-    k.target_ip = "127.0.0.1";
-    k.target_port = arm->link().port();
-    krc = std::make_unique<sim::KrcServer>(k);
+    krc = std::make_unique<sim::KrcServer>(rsi::testing::krcFor(config, arm->link().port(), false));
     krc->start();
     // As rci-cli run does: the program starts once RSI runs.
     rsi::StreamState s;

@@ -14,7 +14,9 @@ namespace {
 
 using RCI::robot::RobotState;
 
-ArmSample sampleOf(const RobotState& s) {
+// From a RobotState or the client's StateSample (the same field names), and the TCP position.
+template <class State>
+ArmSample sampleOf(const State& s, const std::array<double, 3>& tcp_position) {
   ArmSample out;
   out.cycle = s.message_id;
   out.session = 1;
@@ -22,8 +24,12 @@ ArmSample sampleOf(const RobotState& s) {
   out.q_command = s.q_c;
   out.tau = s.tau_m;
   out.wrench = s.tau_ext_in_base;
-  out.tcp_position = {s.toolTobase_pos_m[3], s.toolTobase_pos_m[7], s.toolTobase_pos_m[11]};
+  out.tcp_position = tcp_position;
   return out;
+}
+
+ArmSample sampleOf(const RobotState& s) {
+  return sampleOf(s, {s.toolTobase_pos_m[3], s.toolTobase_pos_m[7], s.toolTobase_pos_m[11]});
 }
 
 std::vector<std::string> names(bool output) {
@@ -61,15 +67,8 @@ size_t RciArm::takeSamples(ArmSample* out, size_t max) {
   client::StateSample s;
   while (n < max && robot_.connection().samples().pop(s)) {
     ArmSample& a = out[n++];
-    a = ArmSample{};
-    a.cycle = s.message_id;
+    a = sampleOf(s, s.tcp_position);
     a.time = s.time;
-    a.session = 1;
-    a.q = s.q;
-    a.q_command = s.q_c;
-    a.tau = s.tau_m;
-    a.wrench = s.tau_ext_in_base;
-    a.tcp_position = s.tcp_position;
   }
   return n;
 }
