@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
-const model::RobotSpec& arm() { return *model::findRobotSpec("xmate3"); }
+const model::RobotSpec& sixAxes() { return *model::findRobotSpec("xmate3"); }
 
 AxisCorrectionLimits wideLimits() {
   AxisCorrectionLimits l;
@@ -104,7 +104,7 @@ void TestJointStream::limitsComeFromTheContext() {
 
 void TestJointStream::holdsStillThenStreamsAMotion() {
   Link link(sampleConfig(), loopback());
-  JointStream stream(link, arm(), wideLimits());
+  JointStream stream(link, sixAxes(), wideLimits());
   link.start();
   FakeRobot robot(link.port());
   const std::array<double, 6> set{10, -20, 30, 0, 45, 0}, actual{10.01, -20, 30, 0, 45, 0};
@@ -152,7 +152,7 @@ void TestJointStream::silenceDuringAMotionIsReported() {
   LinkOptions options = loopback();
   options.silence_ms = 100;
   Link link(sampleConfig(), options);
-  JointStream stream(link, arm(), wideLimits());
+  JointStream stream(link, sixAxes(), wideLimits());
   link.start();
   FakeRobot robot(link.port());
   const std::array<double, 6> axes{0, 0, 0, 0, 0, 0};
@@ -180,7 +180,7 @@ void TestJointStream::checksNameTheAxisTheLimitAndTheValue() {
   Link link(sampleConfig(), loopback());
   AxisCorrectionLimits limits = wideLimits();
   limits.upper[1] = 5 / kDeg;
-  JointStream stream(link, arm(), limits);
+  JointStream stream(link, sixAxes(), limits);
   const double dt = stream.cycleSeconds();
   const std::array<double, 6> on{}, zero{};
   std::array<double, 6> q{};
@@ -192,7 +192,7 @@ void TestJointStream::checksNameTheAxisTheLimitAndTheValue() {
   QVERIFY2(beyond.startsWith("A2 would need a correction of 6.00 deg") && beyond.contains("UpperLimA2 = 5.0 deg"),
            qPrintable(beyond));
   std::array<double, 6> out{};
-  out[2] = arm().q_max[2] + 0.01;
+  out[2] = sixAxes().q_max[2] + 0.01;
   const QString range = QString::fromStdString(stream.checkSample(out.data(), nullptr, dt, on));
   QVERIFY2(range.startsWith("A3 would reach") && range.contains("outside its range"), qPrintable(range));
 }
