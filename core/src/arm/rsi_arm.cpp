@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "model/euler_zyx.h"
+#include "model/signal_names.h"
 #include "net/clock.h"
 
 namespace xmate::arm {
@@ -145,14 +146,16 @@ void RsiArm::runJointMotion(JointMotion& motion) {
 std::vector<std::string> RsiArm::outputNames() const {
   std::vector<std::string> names;
   if (io_)
-    for (const rsi::DigitalSignal& s : io_->map().outputs) names.push_back("$OUT[" + std::to_string(s.signal) + "]");
+    for (const rsi::DigitalSignal& s : io_->map().outputs)
+      names.push_back(model::doName(model::RobotFamily::kKuka, s.signal));
   return names;
 }
 
 std::vector<std::string> RsiArm::inputNames() const {
   std::vector<std::string> names;
   if (io_)
-    for (const rsi::DigitalSignal& s : io_->map().inputs) names.push_back("$IN[" + std::to_string(s.signal) + "]");
+    for (const rsi::DigitalSignal& s : io_->map().inputs)
+      names.push_back(model::diName(model::RobotFamily::kKuka, s.signal));
   return names;
 }
 

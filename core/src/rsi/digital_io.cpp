@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/signal_names.h"
+
 namespace xmate::rsi {
 namespace {
 
@@ -34,10 +36,15 @@ const DigitalSignal* find(const std::vector<DigitalSignal>& signals, int number)
   return nullptr;
 }
 
-std::string wiredList(const std::vector<DigitalSignal>& signals, const char* name) {
-  if (signals.empty()) return std::string("no ") + name + " is wired to the PC";
+// A KUKA's name of an input or output: "$IN[3]", "$OUT[3]".
+std::string nameOf(int signal, bool output) {
+  return output ? model::doName(model::RobotFamily::kKuka, signal) : model::diName(model::RobotFamily::kKuka, signal);
+}
+
+std::string wiredList(const std::vector<DigitalSignal>& signals, bool output) {
+  if (signals.empty()) return std::string("no ") + (output ? "$OUT" : "$IN") + " is wired to the PC";
   std::string list;
-  for (const DigitalSignal& s : signals) list += (list.empty() ? "" : ", ") + std::string(name) + "[" + std::to_string(s.signal) + "]";
+  for (const DigitalSignal& s : signals) list += (list.empty() ? "" : ", ") + nameOf(s.signal, output);
   return "wired to the PC: " + list;
 }
 
@@ -85,8 +92,8 @@ DigitalIo::DigitalIo(Link& link, DigitalIoMap map) : link_(link), map_(std::move
 void DigitalIo::setOutput(int signal, bool level) {
   for (size_t i = 0; i < map_.outputs.size(); ++i)
     if (map_.outputs[i].signal == signal) return link_.setReceiveValue(output_slots_[i], level ? 1.0 : 0.0);
-  throw std::out_of_range("$OUT[" + std::to_string(signal) + "] is not wired to the PC in the RSI context (" +
-                          wiredList(map_.outputs, "$OUT") +
+  throw std::out_of_range(nameOf(signal, true) + " is not wired to the PC in the RSI context (" +
+                          wiredList(map_.outputs, true) +
                           "); wire an ETHERNET output to a DIGOUT input for it in RSI Visual");
 }
 
@@ -95,12 +102,12 @@ bool DigitalIo::input(int signal) const {
     if (map_.inputs[i].signal != signal) continue;
     RobSample sample;
     if (!link_.latest(sample))
-      throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived, so $IN[" + std::to_string(signal) +
-                               "] is not known yet");
+      throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived, so " + nameOf(signal, false) +
+                               " is not known yet");
     return sample.values[size_t(input_slots_[i])] != 0.0;
   }
-  throw std::out_of_range("$IN[" + std::to_string(signal) + "] is not wired to the PC in the RSI context (" +
-                          wiredList(map_.inputs, "$IN") +
+  throw std::out_of_range(nameOf(signal, false) + " is not wired to the PC in the RSI context (" +
+                          wiredList(map_.inputs, false) +
                           "); wire a DIGIN output to an ETHERNET input for it in RSI Visual");
 }
 

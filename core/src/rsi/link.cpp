@@ -110,9 +110,7 @@ int64_t Link::answer(const net::Endpoint& to, int64_t received_ns) {
     return -1;
   }
   ++counting_.answered;
-  const int64_t took = net::monotonicNs() - received_ns;
-  if (took > int64_t(options_.cycle_ms) * 1'000'000) ++counting_.late;
-  return took;
+  return net::monotonicNs() - received_ns;
 }
 
 void Link::run() {
@@ -152,13 +150,14 @@ void Link::run() {
     for (uint32_t i = 0; i < sample.count; ++i) sample.values[i] = decoder_.value(int(i));
     latest_.store(sample);
     const int64_t took = answer(from, now);
-    counters_.store(counting_);
     LinkSample brief;
+    brief.late = took > int64_t(options_.cycle_ms) * 1'000'000;  // the robot counts it in Delay
+    if (brief.late) ++counting_.late;
+    counters_.store(counting_);
     brief.ipoc = sample.ipoc;
     brief.received_ns = now;
     brief.answer_ns = took < 0 ? -1 : int32_t(std::min<int64_t>(took, INT32_MAX));
     brief.session = session_;
-    brief.late = took > int64_t(options_.cycle_ms) * 1'000'000;
     brief.count = uint32_t(std::min<size_t>(sample.count, kSampleSlots));
     for (uint32_t i = 0; i < brief.count; ++i) brief.values[i] = sample.values[i];
     samples_->push(brief);
