@@ -77,13 +77,8 @@ int runGuide(const GuideOptions& o) {
   const guide::NetFtSource source(sensor);
   guide::AdmittanceGuide guide(model::ArmKinematics(*spec), source, arm.cycleSeconds(), parameters, tool);
   // Within the context's correction limits around where RSI started.
-  rsi::StreamState s;
-  arm.stream().state(s);
   std::array<double, 7> lower{}, upper{};
-  for (size_t i = 0; i < 7; ++i) {
-    lower[i] = i < 6 ? s.q_on[i] + arm.stream().limits().lower[i] : 0;
-    upper[i] = i < 6 ? s.q_on[i] + arm.stream().limits().upper[i] : 0;
-  }
+  arm.stream().reachableBounds(lower, upper);
   guide.setJointBounds(lower, upper);
 
   const std::string how_long = o.seconds > 0 ? "for " + std::to_string(o.seconds) + " s" : "until Ctrl-C";

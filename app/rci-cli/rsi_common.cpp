@@ -17,20 +17,7 @@ namespace rci_cli {
 
 // The RSI context beside `config_path` whose ETHERNET object names that file.
 std::string contextNaming(const std::string& config_path) {
-  namespace fs = std::filesystem;
-  const fs::path config = fs::weakly_canonical(config_path);
-  std::vector<std::string> found;
-  std::error_code error;
-  for (const fs::directory_entry& entry : fs::directory_iterator(config.parent_path(), error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() < 8 || name.compare(name.size() - 8, 8, ".rsi.xml") != 0) continue;
-    try {
-      if (fs::weakly_canonical(xmate::rsi::readContext(entry.path().string()).ethernetConfigPath()) == config)
-        found.push_back(entry.path().string());
-    } catch (const std::exception&) {
-      // Not a context we can read: not the one.
-    }
-  }
+  const std::vector<std::string> found = xmate::rsi::contextsNaming(config_path);
   if (found.size() == 1) return found.front();
   throw std::runtime_error(
       (found.empty() ? "no RSI context (NAME.rsi.xml) beside " + config_path + " names it"

@@ -19,6 +19,14 @@ inline SessionTarget lockstepSimulator() {
   return target;
 }
 
+// The built-in KUKA simulator (a KR 6 R900 sixx running the sample RSI context, with its F/T sensor).
+inline SessionTarget kukaSimulator() {
+  SessionTarget target;
+  target.kind = SessionTarget::Kind::kKukaSimulator;
+  target.kuka_model = QStringLiteral("kr6_r900_sixx");
+  return target;
+}
+
 // A TCP port nobody listens on (bound and released again).
 inline uint16_t unusedPort() {
   xmate::net::TcpListener listener;

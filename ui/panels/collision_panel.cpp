@@ -22,6 +22,7 @@ namespace rci::ui {
 
 CollisionPanel::CollisionPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("collision"), tr("Collision"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kControllerSafety));
   auto* group = new QGroupBox(tr("Collision detection thresholds"), this);
   auto* grid = new QGridLayout(group);
   grid->addWidget(new QLabel(tr("Joint"), group), 0, 0);

@@ -19,6 +19,7 @@ namespace rci::ui {
 
 DragPanel::DragPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("drag"), tr("Drag"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kBuiltInGuiding));
   auto* group = new QGroupBox(tr("Hand guiding"), this);
   auto* form = new QFormLayout(group);
   space_ = new QComboBox(group);

@@ -19,6 +19,7 @@ namespace mc = xmate::model;
 
 FiltersPanel::FiltersPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("filters"), tr("Filters"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kControllerSafety));
   auto* group = new QGroupBox(tr("Command low-pass filters"), this);
   auto* form = new QFormLayout(group);
   const QString range = tr("allowed %1-%2 Hz, recommended %3-%4 Hz")

@@ -20,6 +20,7 @@ namespace mc = xmate::model;
 
 ImpedancePanel::ImpedancePanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("impedance"), tr("Impedance"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kControllerSafety));
   const QStringList joints{"J1", "J2", "J3", "J4", "J5", "J6", "J7"};
   const QStringList cart{"x", "y", "z", "rx", "ry", "rz"};
   const QStringList wrench{"Fx", "Fy", "Fz", "Mx", "My", "Mz"};

@@ -22,6 +22,7 @@ const char* const kSignalNames[6] = {"0_0", "0_1", "0_2", "0_3", "1_0", "1_1"};
 }  // namespace
 
 IoPanel::IoPanel(Session& session, QWidget* parent) : PanelBase(session, QStringLiteral("io"), tr("IO"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kDigitalIo));
   auto* outs = new QGroupBox(tr("Digital outputs"), this);
   auto* out_grid = new QGridLayout(outs);
   auto* ins = new QGroupBox(tr("Digital inputs"), this);

@@ -44,9 +44,11 @@ PanelBase::PanelBase(Session& session, const QString& key, const QString& title,
   });
 }
 
-const xmate::model::RobotSpec& PanelBase::spec() const {
-  auto* robot = session_.robot();
-  return xmate::model::robotSpec(robot ? robot->type() : session_.target().type);
+const xmate::model::RobotSpec& PanelBase::spec() const { return session_.spec(); }
+
+bool PanelBase::appliesTo(Session& session) const {
+  const xmate::arm::Arm* arm = session.arm();
+  return arm != nullptr && (arm->capabilities() & needs_) == needs_;
 }
 
 bool PanelBase::isOpen() const { return session_.isOpen(); }

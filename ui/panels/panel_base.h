@@ -14,6 +14,7 @@
 
 #include <xmate/robot.h>
 
+#include "arm/arm.h"
 #include "model/robot_spec.h"
 
 class QAbstractButton;
@@ -33,8 +34,14 @@ class PanelBase : public QWidget {
   PanelBase(Session& session, const QString& key, const QString& title, QWidget* parent);
   const QString& key() const { return key_; }
   const QString& title() const { return title_; }
+  // Whether the panel applies to the open session: the window hides its dock otherwise (a KUKA has
+  // no controller-side safety settings, an xMate no RSI). Default: the arm has every capability
+  // given to setNeeds(); panels that need something else (a simulator) override it. GUI thread.
+  virtual bool appliesTo(Session& session) const;
 
  protected:
+  // The arm capabilities this panel needs (none by default: it applies to both families).
+  void setNeeds(xmate::arm::Capabilities needs) { needs_ = needs; }
   Session& session() const { return session_; }
   // The model of the open session (or of the target about to be opened).
   const xmate::model::RobotSpec& spec() const;
@@ -83,6 +90,7 @@ class PanelBase : public QWidget {
   QVBoxLayout* body_ = nullptr;
   MessageLine* status_ = nullptr;
   QList<QWidget*> send_widgets_;
+  xmate::arm::Capabilities needs_ = 0;
   std::deque<Pending> pending_;
 };
 

@@ -8,6 +8,7 @@
 #include "panels/collision_panel.h"
 #include "panels/drag_panel.h"
 #include "panels/filters_panel.h"
+#include "panels/force_guide_panel.h"
 #include "panels/impedance_panel.h"
 #include "panels/io_panel.h"
 #include "panels/jog_panel.h"
@@ -23,12 +24,14 @@ namespace rci::ui {
 
 std::vector<PanelSpec> createPanels(Session& session, QWidget* parent) {
   std::vector<PanelSpec> panels;
-  auto add = [&panels](PanelBase* panel, Qt::DockWidgetArea area, bool scrolls_itself = false) {
-    panels.push_back({panel->objectName(), panel->title(), panel, area, scrolls_itself});
+  auto add = [&panels, &session](PanelBase* panel, Qt::DockWidgetArea area, bool scrolls_itself = false) {
+    panels.push_back({panel->objectName(), panel->title(), panel, area, scrolls_itself,
+                      [panel, &session] { return panel->appliesTo(session); }});
   };
   add(new PowerPanel(session, parent), Qt::RightDockWidgetArea);
   add(new JogPanel(session, parent), Qt::RightDockWidgetArea);
   add(new DragPanel(session, parent), Qt::RightDockWidgetArea);
+  add(new ForceGuidePanel(session, parent), Qt::RightDockWidgetArea);
   add(new IoPanel(session, parent), Qt::RightDockWidgetArea);
   add(new SafetyPanel(session, parent), Qt::RightDockWidgetArea);
   add(new SimulatorPanel(session, parent), Qt::RightDockWidgetArea);

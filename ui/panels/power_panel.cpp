@@ -17,6 +17,7 @@ namespace rci::ui {
 
 PowerPanel::PowerPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("power"), tr("Power"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kPowerControl));
   auto* motors = new QGroupBox(tr("Motor power"), this);
   auto* grid = new QGridLayout(motors);
   motor_lamp_ = new Lamp(lampGreen(), motors);

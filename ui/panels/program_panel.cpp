@@ -190,9 +190,7 @@ QWidget* ProgramPanel::buildTeachGroup() {
                        group);
   di_trigger_ = new QComboBox(group);
   di_trigger_->setObjectName(QStringLiteral("program.diTrigger"));
-  di_trigger_->addItem(tr("Off"), -1);
-  for (int i = 0; i < xmate::teach::kXmateSignalCount; ++i)
-    di_trigger_->addItem(QString::fromStdString(xmate::teach::diName(xmate::model::RobotFamily::kXmate, i)), i);
+  fillDiTrigger();
   di_trigger_->setToolTip(tr("Record a waypoint on each rising edge of this digital input (e.g. a button on the "
                              "tool)"));
   record_state_ = new QLabel(tr("Hand-guide the arm (Drag panel), then record."), group);
@@ -446,7 +444,13 @@ bool ProgramPanel::event(QEvent* event) {
   return PanelBase::event(event);
 }
 
-bool ProgramPanel::haveLiveState() const { return isOpen() && session().live().has_state; }
+bool ProgramPanel::haveLiveState() const { return isOpen() && session().live().has_arm_state; }
+
+xmate::teach::Target ProgramPanel::livePose() const {
+  const LiveState& live = session().live();
+  // An xMate's state also carries the arm angle (7-axis redundancy); every arm has joints and TCP.
+  return live.has_state ? xmate::teach::targetFromState(live.state, spec()) : xmate::teach::targetFromArm(live.arm, spec());
+}
 
 const xmate::teach::Program& ProgramPanel::program() const { return model_->program(); }
 
@@ -476,20 +480,19 @@ void ProgramPanel::record() {
     showStatus(tr("Record: a run is active — stop it first."), true);
     return;
   }
-  const xmate::XmateType type = session().robot() ? session().robot()->type() : session().target().type;
-  if (model_->count() > 0 && program().robot != &xmate::model::robotSpec(type)) {
+  if (model_->count() > 0 && program().robot != &spec()) {
     showStatus(tr("Record: this program is for another robot model than the one connected — start a new "
                   "program (New) to teach this robot."),
                true);
     return;
   }
-  if (model_->count() == 0 && program().robot != &xmate::model::robotSpec(type)) {
+  if (model_->count() == 0 && program().robot != &spec()) {
     xmate::teach::Program empty;
-    empty.robot = &xmate::model::robotSpec(type);
+    empty.robot = &spec();
     model_->setProgram(empty);
   }
   if (!teachWithRobotTool(tr("Record"))) return;
-  const xmate::teach::Target target = xmate::teach::targetFromState(session().live().state, type);
+  const xmate::teach::Target target = livePose();
   const int kind = record_type_->currentData().toInt();
   if (kind == kRecordC && !have_via_) {
     via_ = target;
@@ -522,7 +525,8 @@ bool ProgramPanel::teachWithRobotTool(const QString& action) {
     tool = robot->toolFrame();
     robot->load(load.mass, load.center, load.inertia);
   }
-  const std::string problem = xmate::teach::adoptTool(adopted, session().live().state, tool, load);
+  const xmate::arm::ArmState& now = session().live().arm;
+  const std::string problem = xmate::teach::adoptTool(adopted, now.sample.q, now.tcp, tool, load);
   if (!problem.empty()) {
     note(action + QStringLiteral(": ") + text::programProblem(problem), true);
     return false;
@@ -540,8 +544,23 @@ void ProgramPanel::note(const QString& text, bool error, const QString& path) {
 void ProgramPanel::resetDiTrigger() {
   // The level now is the reference: only a later rising edge records.
   const int di = di_trigger_->currentData().toInt();
-  di_known_ = haveLiveState() && di >= 0 && di < xmate::teach::kXmateSignalCount;
-  if (di_known_) last_di_ = session().live().digital_in[size_t(di)];
+  di_known_ = haveLiveState() && di >= 0 && di < 64;
+  if (di_known_) last_di_ = (session().live().inputs >> di) & 1u;
+}
+
+void ProgramPanel::fillDiTrigger() {
+  std::vector<std::string> names;
+  if (const xmate::arm::Arm* arm = session().arm()) names = arm->inputNames();
+  else
+    for (int i = 0; i < xmate::teach::kXmateSignalCount; ++i)
+      names.push_back(xmate::teach::diName(xmate::model::RobotFamily::kXmate, i));
+  const QString keep = di_trigger_->currentText();
+  const QSignalBlocker quiet(di_trigger_);
+  di_trigger_->clear();
+  di_trigger_->addItem(tr("Off"), -1);
+  for (size_t i = 0; i < names.size() && i < 64; ++i) di_trigger_->addItem(QString::fromStdString(names[i]), int(i));
+  const int again = di_trigger_->findText(keep);
+  di_trigger_->setCurrentIndex(again >= 0 ? again : 0);
 }
 
 void ProgramPanel::cancelPendingVia() {
@@ -629,7 +648,7 @@ void ProgramPanel::touchUp(bool via) {
   const int row = selectedRow();
   if (row < 0 || !haveLiveState() || running_) return;
   if (!teachWithRobotTool(via ? tr("Touch up via") : tr("Touch up"))) return;
-  const xmate::teach::Target pose = xmate::teach::targetFromState(session().live().state, *program().robot);
+  const xmate::teach::Target pose = livePose();
   if (via) {
     if (!model_->replaceVia(row, pose)) {
       showStatus(tr("Touch up via: select a MOVEC instruction."), true);

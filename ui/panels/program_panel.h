@@ -113,6 +113,10 @@ class ProgramPanel : public PanelBase {
   void updateTitle();
   void updateButtons();
   bool haveLiveState() const;
+  // The arm's pose now as a waypoint (joints, TCP; an xMate's arm angle too).
+  xmate::teach::Target livePose() const;
+  // The DI-trigger list: the connected arm's inputs (the xMate's when none is connected).
+  void fillDiTrigger();
 
   // Files (program_panel_files.cpp).
   void openClicked();
@@ -157,6 +161,7 @@ class ProgramPanel : public PanelBase {
   // somewhere else or its tool changes (followRobot).
   std::array<double, 7> traced_q_{};
   std::array<double, 16> traced_tcp_{};
+  std::array<double, 7> followed_q_{};  // the joints at the previous display tick
   QString path_;
   bool modified_ = false;
   Dialogs dialogs_;

@@ -65,7 +65,7 @@ void ProgramPanel::newClicked() {
 
 void ProgramPanel::newProgram() {
   xmate::teach::Program empty;
-  empty.robot = &xmate::model::robotSpec(session().robot() ? session().robot()->type() : session().target().type);
+  empty.robot = &spec();
   model_->setProgram(empty);
   path_.clear();
   modified_ = false;
@@ -104,9 +104,9 @@ bool ProgramPanel::openFile(const QString& path) {
   updateButtons();
   updateOverlay();
   QString note;
-  if (isOpen() && session().robot()) {
+  if (isOpen()) {
     try {
-      xmate::teach::requireRobot(loaded, session().robot()->type());
+      xmate::teach::requireRobot(loaded, spec());
     } catch (const std::exception& e) {
       note = QStringLiteral(" ") + QString::fromStdString(e.what());
     }

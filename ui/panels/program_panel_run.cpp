@@ -18,6 +18,7 @@
 
 #include <xmate/model.h>
 
+#include "arm/rsi_arm.h"
 #include "model/arm_kinematics.h"
 #include "panels/fields.h"
 #include "panels/lamp.h"
@@ -102,6 +103,15 @@ void ProgramPanel::startRun(const xmate::teach::Program& program, bool single_st
   showStatus(action + QStringLiteral(" ..."), false);
   updateButtons();
   std::shared_ptr<RunSlot> slot = run_slot_;
+  // The executor drives an xMate through its vendor API and a KUKA through its RSI arm.
+  if (xmate::arm::RsiArm* rsi = session().rsiArm()) {
+    session().runArmMotion(run_label_, [slot, program, options, rsi](xmate::arm::Arm&, const MotionToken& token) {
+      xmate::teach::ExecutorOptions with_token = options;
+      with_token.stop_token = &token.stopFlag();  // Stop, disconnect and quit end the run
+      slot->report = slot->executor.run(*rsi, program, with_token);
+    });
+    return;
+  }
   session().runMotion(run_label_, [slot, program, options](xmate::Robot& robot, const MotionToken& token) {
     xmate::teach::ExecutorOptions with_token = options;
     with_token.stop_token = &token.stopFlag();  // Stop, disconnect and quit end the run
@@ -134,7 +144,7 @@ xmate::teach::TraceOptions ProgramPanel::traceOptions() const {
   if (auto* robot = session().robot()) options.tool = robot->toolFrame();
   if (haveLiveState()) {  // the measured TCP, for the check of the program's tool
     options.has_tcp = true;
-    options.tcp = session().live().state.toolTobase_pos_m;
+    options.tcp = session().live().arm.tcp;
   }
   options.has_soft_limits = e.has_soft_limits;
   options.soft_lower = e.soft_lower;
@@ -145,7 +155,7 @@ xmate::teach::TraceOptions ProgramPanel::traceOptions() const {
 }
 
 std::array<double, 7> ProgramPanel::currentQ() const {
-  if (isOpen() && session().live().has_state) return session().live().state.q;
+  if (haveLiveState()) return session().live().arm.sample.q;
   return {};
 }
 
@@ -255,8 +265,8 @@ void ProgramPanel::refresh(const LiveState& live) {
   updateButtons();
   followRobot(live);
   const int di = di_trigger_->currentData().toInt();
-  if (di < 0 || di >= int(live.digital_in.size())) return;
-  const bool level = live.digital_in[size_t(di)];
+  if (di < 0 || di >= 64) return;
+  const bool level = (live.inputs >> di) & 1u;
   const bool rising = di_known_ && level && !last_di_;
   last_di_ = level;
   di_known_ = true;
@@ -265,6 +275,7 @@ void ProgramPanel::refresh(const LiveState& live) {
 
 void ProgramPanel::sessionOpened() {
   di_known_ = false;  // no inputs polled yet
+  fillDiTrigger();
   if (model_->count() == 0) newProgram();
   updateButtons();
   updateOverlay();
@@ -287,9 +298,8 @@ void ProgramPanel::sessionClosed() {
 }
 
 std::string ProgramPanel::otherModelProblem() const {
-  const xmate::XmateType type = session().robot() ? session().robot()->type() : session().target().type;
   try {
-    xmate::teach::requireRobot(program(), type);
+    xmate::teach::requireRobot(program(), spec());
     return {};
   } catch (const std::exception& e) {
     return e.what();
@@ -367,17 +377,18 @@ void ProgramPanel::startTrace() {
 }
 
 void ProgramPanel::followRobot(const LiveState& live) {
-  constexpr double kMoved = 1e-4;     // rad, m: far below what the preview or a problem shows
-  constexpr double kResting = 0.01;   // rad/s: trace where the arm stopped, not along a drag
-  if (!live.has_state || running_ || model_->count() == 0 || isTracing()) return;
-  const auto& s = live.state;
-  double moved = 0, speed = 0;
+  constexpr double kMoved = 1e-4;         // rad, m: far below what the preview or a problem shows
+  constexpr double kRestingStep = 3e-4;   // rad per display tick (~0.01 rad/s): trace where the arm stopped, not along a drag
+  const std::array<double, 7> previous = followed_q_;
+  followed_q_ = live.arm.sample.q;
+  if (!live.has_arm_state || running_ || model_->count() == 0 || isTracing()) return;
+  double moved = 0, step = 0;
   for (size_t i = 0; i < 7; ++i) {
-    moved = std::max(moved, std::abs(s.q[i] - traced_q_[i]));
-    speed = std::max(speed, std::abs(s.dq_m[i]));
+    moved = std::max(moved, std::abs(live.arm.sample.q[i] - traced_q_[i]));
+    step = std::max(step, std::abs(live.arm.sample.q[i] - previous[i]));
   }
-  for (size_t i = 0; i < 12; ++i) moved = std::max(moved, std::abs(s.toolTobase_pos_m[i] - traced_tcp_[i]));
-  if (moved > kMoved && speed < kResting) updateOverlay();
+  for (size_t i = 0; i < 12; ++i) moved = std::max(moved, std::abs(live.arm.tcp[i] - traced_tcp_[i]));
+  if (moved > kMoved && step < kRestingStep) updateOverlay();
 }
 
 void ProgramPanel::traceFinished() {

@@ -19,6 +19,7 @@ namespace rci::ui {
 
 SafetyBoxPanel::SafetyBoxPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("box"), tr("Safety box"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kControllerSafety));
   auto* group = new QGroupBox(tr("Cartesian safety box (base frame)"), this);
   group->setToolTip(tr("While the motors are on and the box is enabled, the TCP leaving the box switches the "
                        "motors off. It is a safety limit, not a force-control wall."));

@@ -36,6 +36,7 @@ QString bitTip(int bit) {
 
 SafetyPanel::SafetyPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("safety"), tr("Safety"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kControllerSafety));
   body()->addWidget(makeActive());
   body()->addWidget(makeStops());
   body()->addWidget(makeConditions());

@@ -22,6 +22,7 @@ namespace rci::ui {
 
 SoftLimitsPanel::SoftLimitsPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("limits"), tr("Soft limits"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kControllerSafety));
   auto* group = new QGroupBox(tr("Soft joint limits"), this);
   auto* grid = new QGridLayout(group);
   grid->addWidget(new QLabel(tr("Joint"), group), 0, 0);

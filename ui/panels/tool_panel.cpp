@@ -37,6 +37,7 @@ std::array<double, 16> toolFrameFromXyzRpy(const std::array<double, 6>& v) {
 
 ToolPanel::ToolPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("tool"), tr("Tool & payload"), parent) {
+  setNeeds(uint32_t(xmate::arm::Capability::kControllerSafety));
   body()->addWidget(makeToolGroup());
   body()->addWidget(makePayloadGroup());
   loadFields(tool_ + centre_ + inertia_ + QList<QDoubleSpinBox*>{mass_});

@@ -17,20 +17,25 @@
 #include <utility>
 #include <vector>
 
+#include "arm/rci_arm.h"
+#include "arm/rsi_arm.h"
+#include "net/clock.h"
 #include "session/session_link.h"
 
 namespace rci::ui {
 namespace {
 
 // Runs a queued job on a worker thread: (true, "") or (false, what the exception said).
-std::pair<bool, QString> runCatching(const std::function<void(xmate::Robot&)>& job, xmate::Robot& robot) {
+std::pair<bool, QString> runCatching(const std::function<void()>& job) {
   try {
-    job(robot);
+    job();
     return {true, QString()};
   } catch (const std::exception& e) {
     return {false, QString::fromStdString(e.what())};
   }
 }
+
+const QString kNotConnected = QStringLiteral("not connected: connect to a robot or the simulator first");
 
 constexpr int kTickMs = 33;            // ~30 Hz display rate
 constexpr qint64 kSilenceLimitMs = 1000;  // no state for this long: the controller is gone
@@ -73,6 +78,19 @@ class BackgroundThreads {
   std::vector<Entry> threads_;
 };
 
+// The KUKA simulator's outputs as the arm names them: bit k = output k of outputNames().
+uint64_t simulatedOutputs(xmate::arm::RsiArm& arm, uint64_t digout) {
+  uint64_t bits = 0;
+  if (const xmate::rsi::DigitalIo* io = arm.digitalIo()) {
+    const auto& outputs = io->map().outputs;
+    for (size_t k = 0; k < outputs.size() && k < 64; ++k) {
+      const int signal = outputs[k].signal;
+      if (signal >= 1 && signal <= 64 && (digout >> (signal - 1)) & 1u) bits |= uint64_t{1} << k;
+    }
+  }
+  return bits;
+}
+
 QString silenceReason(const SessionTarget& target) {
   if (target.kind == SessionTarget::Kind::kSimulator)
     return QStringLiteral("The built-in simulator stopped sending states and could not be reached again. "
@@ -97,6 +115,9 @@ struct Session::Impl {
   void onTick();
   void drainSamples();
   void refreshLive();
+  void refreshKuka();
+  void reportRsiChange(const xmate::rsi::SessionStatus& before, const xmate::rsi::SessionStatus& now);
+  void startMotion(const QString& label, std::function<void(const MotionToken&)> job);
   bool controllerSilent();
   void startReconnect();
   void finishReconnect(uint64_t generation, bool ok);
@@ -114,9 +135,13 @@ struct Session::Impl {
   ProgramOverlay overlay;
   std::array<double, 16> model_tool{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   std::array<bool, 6> recorded_do{};
+  uint64_t recorded_kuka_outputs = 0;
+  const xmate::model::RobotSpec* spec = &xmate::model::robotSpec(xmate::XMATE7_PRO);
   QTimer timer;
   std::vector<xmate::client::StateSample> batch = std::vector<xmate::client::StateSample>(
       xmate::client::SampleRing::capacity());
+  std::vector<xmate::arm::ArmSample> arm_batch = std::vector<xmate::arm::ArmSample>(
+      std::max<size_t>(xmate::client::SampleRing::capacity(), 2048));
   QElapsedTimer clock;
   qint64 rate_start_ms = 0;
   uint64_t rate_start_count = 0;
@@ -127,6 +152,12 @@ struct Session::Impl {
 
 void Session::Impl::open(const SessionTarget& wanted) {
   close(QString(), false);
+  try {
+    spec = &wanted.spec();
+  } catch (const std::exception& e) {
+    emit self.openFailed(QString::fromStdString(e.what()));
+    return;
+  }
   target = wanted;
   opening = true;
   const uint64_t my_generation = ++generation;
@@ -161,9 +192,14 @@ void Session::Impl::finishOpen(uint64_t my_generation, std::shared_ptr<Link> ope
   live = LiveState{};
   live.connected = true;
   live.simulated = link->server != nullptr;
-  live.dof = link->model->Dof();
-  model_tool = link->robot->toolFrame();
+  live.kuka_simulated = link->krc != nullptr;
+  live.has_force_sensor = link->ft != nullptr;
+  spec = &link->arm->spec();
+  live.dof = spec->dof;
+  live.capabilities = link->arm->capabilities();
+  if (link->robot) model_tool = link->robot->toolFrame();
   recorded_do = {};
+  recorded_kuka_outputs = 0;
   startWorkers(my_generation);
   clock.start();
   restartWatchdog();
@@ -173,8 +209,9 @@ void Session::Impl::finishOpen(uint64_t my_generation, std::shared_ptr<Link> ope
 
 void Session::Impl::startWorkers(uint64_t my_generation) {
   xmate::Robot* robot = link->robot.get();
-  link->commands = std::make_unique<JobWorker>("rci-commands", [this, robot, my_generation] {
-    PollResult poll = pollRobot(*robot);
+  xmate::arm::Arm* arm = link->arm;
+  link->commands = std::make_unique<JobWorker>("rci-commands", [this, robot, arm, my_generation] {
+    PollResult poll = robot ? pollRobot(*robot) : pollArm(*arm);
     // Hand-off: Qt queued invocation of the poll result to the GUI thread.
     QMetaObject::invokeMethod(&self, [this, my_generation, poll] { applyPoll(my_generation, poll); },
                               Qt::QueuedConnection);
@@ -213,9 +250,16 @@ void Session::Impl::teardown(std::shared_ptr<Link> old) {
 
 void Session::Impl::applyPoll(uint64_t my_generation, const PollResult& poll) {
   if (my_generation != generation || !poll.ok) return;
+  if (!link->robot) {
+    live.inputs = poll.kuka_inputs;
+    return;
+  }
   live.motor_state = poll.motor_state;
   live.safety_stop = poll.safety_stop;
   live.digital_in = poll.digital_in;
+  live.inputs = 0;
+  for (size_t i = 0; i < poll.digital_in.size(); ++i)
+    if (poll.digital_in[i]) live.inputs |= uint64_t{1} << i;
   if (poll.tool != model_tool) {
     model_tool = poll.tool;
     link->model->SetCoor(model_tool);
@@ -223,16 +267,69 @@ void Session::Impl::applyPoll(uint64_t my_generation, const PollResult& poll) {
 }
 
 void Session::Impl::drainSamples() {
+  if (link->rsi) {
+    // Hand-off: the RSI link's SPSC sample ring; this (GUI) thread is its only consumer.
+    const size_t n = link->rsi->takeSamples(arm_batch.data(), arm_batch.size());
+    if (n > 0) emit self.armSamplesArrived(arm_batch.data(), int(n));
+    return;
+  }
   // Hand-off: the client's SPSC ring; this (GUI) thread is its only consumer.
   const size_t n = link->robot->connection().samples().popBatch(batch.data(), batch.size());
-  if (n > 0) emit self.samplesArrived(batch.data(), int(n));
+  if (n == 0) return;
+  emit self.samplesArrived(batch.data(), int(n));
+  for (size_t i = 0; i < n; ++i) arm_batch[i] = xmate::arm::armSample(batch[i]);
+  emit self.armSamplesArrived(arm_batch.data(), int(n));
+}
+
+void Session::Impl::refreshKuka() {
+  xmate::arm::RsiArm& arm = *link->rsi;
+  live.has_arm_state = arm.latest(live.arm) || live.has_arm_state;
+  const xmate::rsi::SessionStatus before = live.rsi;
+  live.rsi = arm.sessionStatus();
+  reportRsiChange(before, live.rsi);
+  live.realtime = arm.link().realtimeStatus();
+  live.motion_running = link->motion.busy.load();
+  const qint64 now = clock.elapsed();
+  const uint64_t count = live.arm.sample.cycle;
+  if (count < rate_start_count) rate_start_count = count;  // a new RSI session counts from 0
+  if (now - rate_start_ms >= 1000) {
+    live.loop_rate_hz = double(count - rate_start_count) * 1000.0 / double(now - rate_start_ms);
+    rate_start_ms = now;
+    rate_start_count = count;
+  }
+  if (link->krc) {
+    live.krc = link->krc->krc().status();
+    live.outputs = simulatedOutputs(arm, live.krc.digout);
+  } else {
+    live.outputs = recorded_kuka_outputs;
+  }
+  xmate::ft::Wrench reading;
+  live.force_reading = link->ft && link->ft->latest(reading) && reading.status == 0 &&
+                       xmate::net::monotonicNs() - reading.received_ns < 200'000'000;
+  if (live.force_reading) live.force = reading.values;
+}
+
+// The event log hears when RSI starts, stops (and why) and starts again.
+void Session::Impl::reportRsiChange(const xmate::rsi::SessionStatus& before, const xmate::rsi::SessionStatus& now) {
+  using xmate::rsi::SessionPhase;
+  if (now.phase == before.phase && now.session == before.session) return;
+  const QString words = QString::fromStdString(xmate::rsi::describe(now));
+  if (now.phase == SessionPhase::kStopped)
+    emit self.eventReported(Session::EventLevel::kError, words, QString());
+  else if (now.phase == SessionPhase::kRunning && (before.phase != SessionPhase::kRunning || now.session != before.session))
+    emit self.eventReported(Session::EventLevel::kInfo, words, QString());
 }
 
 void Session::Impl::refreshLive() {
+  if (link->rsi) {
+    refreshKuka();
+    return;
+  }
   xmate::client::Connection& connection = link->robot->connection();
   if (connection.latestState(live.state)) {
     live.has_state = true;
     live.tau_ext = externalJointTorques(*link->model, live.state.q, live.state.tau_ext_in_base);
+    live.has_arm_state = link->arm->latest(live.arm);
   }
   live.realtime = connection.realtimeStatus();
   live.timing = connection.timing();
@@ -251,6 +348,9 @@ void Session::Impl::refreshLive() {
   } else {
     live.digital_out = recorded_do;
   }
+  live.outputs = 0;
+  for (size_t i = 0; i < live.digital_out.size(); ++i)
+    if (live.digital_out[i]) live.outputs |= uint64_t{1} << i;
 }
 
 bool Session::Impl::controllerSilent() {
@@ -282,7 +382,7 @@ void Session::Impl::forgetSentSettings() {
 
 void Session::Impl::restartWatchdog() {
   rate_start_ms = last_progress_ms = clock.elapsed();
-  rate_start_count = last_count = link->robot->connection().timing().counters.states_received;
+  rate_start_count = last_count = link->robot ? link->robot->connection().timing().counters.states_received : 0;
 }
 
 // The client's session is closed and re-opened on the command worker; meanwhile this thread does not
@@ -319,7 +419,8 @@ void Session::Impl::onTick() {
   if (!reconnecting) {
     drainSamples();
     refreshLive();
-    if (controllerSilent()) startReconnect();
+    // An xMate that stopped sending is reconnected; a KUKA starts RSI again by itself (a new session).
+    if (link->robot && controllerSilent()) startReconnect();
   }
   emit self.tick();
 }
@@ -345,6 +446,11 @@ const SessionTarget& Session::target() const { return impl_->target; }
 const LiveState& Session::live() const { return impl_->live; }
 xmate::Robot* Session::robot() { return impl_->link ? impl_->link->robot.get() : nullptr; }
 xmate::sim::Server* Session::simulator() { return impl_->link ? impl_->link->server.get() : nullptr; }
+xmate::arm::Arm* Session::arm() { return impl_->link ? impl_->link->arm : nullptr; }
+xmate::arm::RsiArm* Session::rsiArm() { return impl_->link ? impl_->link->rsi.get() : nullptr; }
+xmate::sim::KrcServer* Session::kukaSimulator() { return impl_->link ? impl_->link->krc.get() : nullptr; }
+const xmate::ft::NetFtClient* Session::forceSensor() { return impl_->link ? impl_->link->ft.get() : nullptr; }
+const xmate::model::RobotSpec& Session::spec() const { return *impl_->spec; }
 const OperatorSettings& Session::operatorSettings() const { return impl_->settings; }
 
 void Session::setOperatorSettings(const OperatorSettings& settings) {
@@ -360,20 +466,36 @@ void Session::setProgramOverlay(const ProgramOverlay& overlay) {
 }
 
 void Session::recordDigitalOutput(int index, bool on) {
+  if (impl_->link && impl_->link->rsi) {
+    if (index >= 0 && index < 64) {
+      const uint64_t bit = uint64_t{1} << index;
+      impl_->recorded_kuka_outputs = on ? (impl_->recorded_kuka_outputs | bit) : (impl_->recorded_kuka_outputs & ~bit);
+    }
+    return;
+  }
   if (index >= 0 && index < 6) impl_->recorded_do[size_t(index)] = on;
 }
 
 void Session::run(const QString& label, std::function<void(xmate::Robot&)> job) {
-  if (!impl_->link) {
-    emit commandFinished(label, false, QStringLiteral("not connected: connect to a robot or the simulator first"));
+  if (impl_->link && !impl_->link->robot) {
+    emit commandFinished(label, false, QStringLiteral("this works on an xMate only; %1 is connected").arg(impl_->target.describe()));
     return;
   }
-  xmate::Robot* robot = impl_->link->robot.get();
+  xmate::Robot* robot = impl_->link ? impl_->link->robot.get() : nullptr;
+  runOnArm(label, [robot, job = std::move(job)](xmate::arm::Arm&) { job(*robot); });
+}
+
+void Session::runOnArm(const QString& label, ArmJob job) {
+  if (!impl_->link) {
+    emit commandFinished(label, false, kNotConnected);
+    return;
+  }
+  xmate::arm::Arm* arm = impl_->link->arm;
   const uint64_t my_generation = impl_->generation;
   emit commandStarted(label);
   // Hand-off: the command worker's job queue (JobWorker::post, mutex + condition variable).
-  impl_->link->commands->post([this, robot, my_generation, label, job = std::move(job)] {
-    const auto [ok, message] = runCatching(job, *robot);
+  impl_->link->commands->post([this, arm, my_generation, label, job = std::move(job)] {
+    const auto [ok, message] = runCatching([&] { job(*arm); });
     // Hand-off: Qt queued invocation of the result to the GUI thread.
     QMetaObject::invokeMethod(
         this,
@@ -385,40 +507,53 @@ void Session::run(const QString& label, std::function<void(xmate::Robot&)> job) 
 }
 
 void Session::runMotion(const QString& label, MotionJob job) {
-  if (!impl_->link) {
-    emit commandFinished(label, false, QStringLiteral("not connected: connect to a robot or the simulator first"));
+  if (impl_->link && !impl_->link->robot) {
+    emit commandFinished(label, false, QStringLiteral("this works on an xMate only; %1 is connected").arg(impl_->target.describe()));
     return;
   }
-  Link* link = impl_->link.get();
+  xmate::Robot* robot = impl_->link ? impl_->link->robot.get() : nullptr;
+  impl_->startMotion(label, [robot, job = std::move(job)](const MotionToken& token) { job(*robot, token); });
+}
+
+void Session::runArmMotion(const QString& label, ArmMotionJob job) {
+  xmate::arm::Arm* arm = impl_->link ? impl_->link->arm : nullptr;
+  impl_->startMotion(label, [arm, job = std::move(job)](const MotionToken& token) { job(*arm, token); });
+}
+
+void Session::Impl::startMotion(const QString& label, std::function<void(const MotionToken&)> job) {
+  Session* session = &self;
+  if (!link) {
+    emit self.commandFinished(label, false, kNotConnected);
+    return;
+  }
   MotionFlags& flags = link->motion;
   if (flags.busy.exchange(true)) {
-    emit commandFinished(label, false, QStringLiteral("a motion is already running"));
+    emit self.commandFinished(label, false, QStringLiteral("a motion is already running"));
     return;
   }
   flags.stop.store(false);
   flags.heartbeat_ns.store(steadyNs(), std::memory_order_relaxed);
-  impl_->live.motion_running = true;
-  xmate::Robot* robot = link->robot.get();
-  const uint64_t my_generation = impl_->generation;
-  emit motionStarted(label);
+  live.motion_running = true;
+  const uint64_t my_generation = generation;
+  emit self.motionStarted(label);
   // Hand-off: the result goes to the GUI thread by a Qt queued invocation; busy is cleared first.
-  auto finish = [this, &flags, my_generation, label](bool ok, const QString& message) {
+  auto finish = [this, session, &flags, my_generation, label](bool ok, const QString& message) {
     flags.busy.store(false);
     QMetaObject::invokeMethod(
-        this,
+        session,
         [this, my_generation, label, ok, message] {
-          if (my_generation != impl_->generation) return;
-          impl_->live.motion_running = impl_->link && impl_->link->motion.busy.load();
-          emit motionFinished(label, ok, message);
+          if (my_generation != generation) return;
+          live.motion_running = link && link->motion.busy.load();
+          emit self.motionFinished(label, ok, message);
         },
         Qt::QueuedConnection);
   };
   // Hand-off: the motion worker's job queue (JobWorker::post). The link (and so `flags`) outlives
   // the job: shutdownLink joins the worker before it frees the link, or leaks the link.
   link->motions->post(
-      [robot, &flags, finish, job = std::move(job)] {
+      [&flags, finish, job = std::move(job)] {
         const MotionToken token(flags.stop, flags.heartbeat_ns);
-        const auto [ok, message] = runCatching([&](xmate::Robot& r) { job(r, token); }, *robot);
+        const auto [ok, message] = runCatching([&] { job(token); });
         finish(ok, message);
       },
       [finish] { finish(false, QStringLiteral("not started: the connection closed first")); });

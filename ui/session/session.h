@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // Session: the only door from the window to a robot (docs/architecture.md, "Threads and
-// hand-offs"). It owns the robot client (xmate::Robot), and for the built-in simulator also the
-// embedded sim::Server. Widgets never touch the network: they read live() on tick(), receive state
-// samples by samplesArrived(), and hand commands to run() / runMotion(), which execute on worker
-// threads.
+// hand-offs"). For an xMate it owns the robot client (xmate::Robot) and, for the built-in simulator,
+// the embedded sim::Server; for a KUKA the RSI arm (arm::RsiArm), the F/T sensor's client and, for
+// the built-in KUKA simulator, the simulated KRC and sensor. Both families are reachable as one
+// arm::Arm. Widgets never touch the network: they read live() on tick(), receive samples by
+// samplesArrived() / armSamplesArrived(), and hand commands to run() / runOnArm() and motions to
+// runMotion() / runArmMotion(), which execute on worker threads.
 #pragma once
 
 #include <QObject>
@@ -19,25 +21,60 @@
 #include <xmate/robot.h>
 #include <xmate/types.h>
 
+#include "arm/arm.h"
 #include "client/connection.h"
 #include "client/state_sample.h"
+#include "model/robot_spec.h"
 #include "net/realtime.h"
+#include "rsi/session_monitor.h"
+#include "sim/krc.h"
 #include "sim/server.h"
+
+namespace xmate::arm {
+class RsiArm;
+}
+namespace xmate::ft {
+class NetFtClient;
+}
+namespace xmate::sim {
+class KrcServer;
+}
 
 namespace rci::ui {
 
 // What to connect to.
 struct SessionTarget {
-  enum class Kind { kSimulator, kRobot };
+  enum class Kind {
+    kSimulator,      // the built-in xMate simulator
+    kRobot,          // an xMate controller at host:port (RCI)
+    kKukaSimulator,  // the built-in KUKA simulator: a simulated KRC running an RSI context, and an F/T sensor
+    kKukaRobot,      // a KUKA robot controller sending RSI to this PC
+  };
   Kind kind = Kind::kSimulator;
-  xmate::XmateType type = xmate::XMATE7_PRO;
+  xmate::XmateType type = xmate::XMATE7_PRO;       // xMate kinds
   QString host = QStringLiteral("192.168.0.160");  // kRobot only
   quint16 port = 1337;                              // kRobot only
   // kSimulator only: lock-step clock (deterministic tests) instead of real time.
   bool lockstep = false;
   // kSimulator only: DO k drives DI k.
   bool loopback = false;
-  QString describe() const;  // "Simulator (xMate7 Pro)" / "Robot 192.168.0.160:1337 (xMate7 Pro)"
+  // KUKA kinds: the model's file stem ("kr6_r900_sixx", "kr16_2").
+  QString kuka_model = QStringLiteral("kr6_r900_sixx");
+  // kKukaRobot: the RSI Ethernet config file (this PC's listen address and port come from it).
+  QString rsi_config;
+  // KUKA kinds: the RSI context the robot runs. "": the built-in simulator runs the sample that
+  // ships (resources/rsi/rci_replay.rsi.xml); for a robot, the one beside rsi_config naming it.
+  QString rsi_context;
+  // kKukaRobot: the F/T sensor's address "HOST" or "HOST:PORT" ("" = no sensor: no hand guiding).
+  QString ft_sensor;
+
+  bool isKuka() const { return kind == Kind::kKukaSimulator || kind == Kind::kKukaRobot; }
+  bool isSimulator() const { return kind == Kind::kSimulator || kind == Kind::kKukaSimulator; }
+  // The model; throws std::invalid_argument for an unknown kuka_model.
+  const xmate::model::RobotSpec& spec() const;
+  // "Simulator (xMate7 Pro)" / "Robot 192.168.0.160:1337 (xMate7 Pro)" / "KUKA simulator (KR 6 R900
+  // sixx)" / "KUKA RSI on 192.168.1.2:49152 (KR 6 R900 sixx)"
+  QString describe() const;
 };
 
 // Everything the panels and the status bar show, refreshed on the GUI thread before each tick().
@@ -56,7 +93,24 @@ struct LiveState {
   xmate::client::SessionTiming timing; // loop rate, jitter, counters
   double loop_rate_hz = 0;             // states per second over the last second
   bool simulated = false;
-  xmate::sim::SimStatus sim;           // valid when simulated
+  xmate::sim::SimStatus sim;           // valid when simulated (xMate)
+
+  // Both families, for family-neutral views (3D, plots, program): what the arm offers, its newest
+  // state in SI units.
+  xmate::arm::Capabilities capabilities = 0;
+  bool has_arm_state = false;
+  xmate::arm::ArmState arm;
+  // Digital IO of either family: bit k is the k-th signal of Session::arm()->inputNames() /
+  // outputNames() (inputs polled ~5 Hz; outputs as set through this window, a simulator's own).
+  uint64_t inputs = 0;
+  uint64_t outputs = 0;
+  // A KUKA over RSI:
+  xmate::rsi::SessionStatus rsi;       // waiting / running / stopped and why; cycle, Delay, answer p99
+  bool kuka_simulated = false;
+  xmate::sim::KrcStatus krc;           // valid when kuka_simulated
+  bool has_force_sensor = false;       // an F/T sensor is configured
+  bool force_reading = false;          // ... and its newest reading is recent and healthy
+  std::array<double, 6> force{};       // the sensor's reading: Fx Fy Fz (N), Tx Ty Tz (Nm), sensor frame
 };
 
 // Settings the window sent that a robot cannot report back. The panel that sends one records it
@@ -122,6 +176,8 @@ class Session : public QObject {
   // for more than 1 s (e.g. after rebootRobot()); between reconnecting() and reconnected()/closed().
   bool isReconnecting() const;
   const SessionTarget& target() const;
+  // The model of the open session, or of the target last opened (xMate7 Pro before any). GUI thread.
+  const xmate::model::RobotSpec& spec() const;
 
   // GUI thread only. Valid between opened() and closed().
   const LiveState& live() const;
@@ -131,6 +187,16 @@ class Session : public QObject {
   // The embedded simulator (scene: external wrench, e-stop, DI levels); nullptr on a real robot.
   // Its calls are quick and may be made from the GUI thread.
   xmate::sim::Server* simulator();
+  // Additions: the open arm of either family (for spec(), capabilities(), IO names); nullptr when
+  // closed. Commands and motions on it go through runOnArm() / runArmMotion().
+  xmate::arm::Arm* arm();
+  // A KUKA's RSI arm (its context, limits and joint stream state); nullptr otherwise.
+  xmate::arm::RsiArm* rsiArm();
+  // The built-in KUKA simulator (the operator's push, faults); nullptr otherwise. Its scene and
+  // fault calls are real-time safe and may be made from the GUI thread.
+  xmate::sim::KrcServer* kukaSimulator();
+  // A KUKA's F/T sensor client (latest() from any thread); nullptr without a sensor.
+  const xmate::ft::NetFtClient* forceSensor();
 
   // Queues job on the command worker (one at a time, in order). When it returns, emits
   // commandFinished(label, true, ""), or (label, false, what()) if it threw. Never blocks.
@@ -144,6 +210,12 @@ class Session : public QObject {
   // unless the session closed meanwhile.
   using MotionJob = std::function<void(xmate::Robot&, const MotionToken&)>;
   void runMotion(const QString& label, MotionJob job);
+  // Additions: the same for either family, on the arm::Arm -- a command (IO) on the command worker,
+  // a motion (arm::Arm::runJointMotion) on the motion worker.
+  using ArmJob = std::function<void(xmate::arm::Arm&)>;
+  void runOnArm(const QString& label, ArmJob job);
+  using ArmMotionJob = std::function<void(xmate::arm::Arm&, const MotionToken&)>;
+  void runArmMotion(const QString& label, ArmMotionJob job);
   // The window's record of settings sent (see OperatorSettings). GUI thread only.
   const OperatorSettings& operatorSettings() const;
   // The program overlay of the 3D view. GUI thread only.
@@ -151,8 +223,9 @@ class Session : public QObject {
   void setProgramOverlay(const ProgramOverlay& overlay);  // emits programOverlayChanged()
   void setOperatorSettings(const OperatorSettings& settings);  // emits operatorSettingsChanged()
 
-  // Addition: a panel that set DO index (0..5) through run() records it here, so live().digital_out
-  // shows it on a real robot (the simulator reports its outputs itself). GUI thread only.
+  // Addition: a panel that set DO index (0..5; a KUKA's: the index into arm()->outputNames(), < 64)
+  // records it here, so live().digital_out / outputs show it on a real robot (the simulators
+  // report their outputs themselves). GUI thread only.
   void recordDigitalOutput(int index, bool on);
 
   // Addition: a panel tells the event log what happened in operator words (e.g. the outcome of a
@@ -176,6 +249,8 @@ class Session : public QObject {
   // Display rate, before tick(): the samples the real-time thread recorded since the last batch,
   // oldest first. The pointer is valid only during the call (connect directly, GUI thread).
   void samplesArrived(const xmate::client::StateSample* samples, int count);
+  // Addition: the same cycles as arm samples, for either family (after samplesArrived on an xMate).
+  void armSamplesArrived(const xmate::arm::ArmSample* samples, int count);
   // Addition: run() queued the job labelled label (commandFinished follows).
   void commandStarted(const QString& label);
   void commandFinished(const QString& label, bool ok, const QString& message);

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
-// Opening and closing one session's link (robot client + embedded simulator) and the idle poll.
+// Opening and closing one session's link (an xMate's robot client + embedded simulator, or a
+// KUKA's RSI arm + F/T sensor + simulated KRC) and the idle poll.
 #include "session/session_link.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <utility>
+
+#include "arm/rci_arm.h"
+#include "model/resource_locator.h"
+#include "rsi/config.h"
 
 namespace rci::ui {
 namespace {
@@ -28,10 +34,104 @@ std::string robotFailure(const SessionTarget& target, const std::exception& e) {
   return message;
 }
 
+// The RSI context the KUKA target runs: the one given, the sample for the built-in simulator, or
+// the one beside the Ethernet config that names it.
+std::string kukaContext(const SessionTarget& target) {
+  if (!target.rsi_context.isEmpty()) return target.rsi_context.toStdString();
+  if (target.kind == SessionTarget::Kind::kKukaSimulator)
+    return (xmate::model::dataDirectory() / "resources/rsi/rci_replay.rsi.xml").string();
+  const std::string config = target.rsi_config.toStdString();
+  const std::vector<std::string> found = xmate::rsi::contextsNaming(config);
+  if (found.size() == 1) return found.front();
+  throw std::runtime_error(
+      (found.empty() ? "No RSI context (NAME.rsi.xml) beside " + config + " names it"
+                     : std::to_string(found.size()) + " RSI contexts beside " + config + " name it") +
+      ". Copy the context the robot runs (from the controller's C:\\KRC\\ROBOTER\\Config\\User\\Common\\SensorInterface) "
+      "next to the Ethernet config and connect again.");
+}
+
+// "HOST" or "HOST:PORT" of an F/T sensor.
+xmate::ft::NetFtOptions sensorOptions(const QString& address) {
+  xmate::ft::NetFtOptions options;
+  const int colon = address.lastIndexOf(QLatin1Char(':'));
+  options.host = (colon < 0 ? address : address.left(colon)).trimmed().toStdString();
+  if (colon >= 0) {
+    bool ok = false;
+    const uint port = address.mid(colon + 1).toUInt(&ok);
+    if (!ok || port == 0 || port > 65535)
+      throw std::runtime_error("The F/T sensor address \"" + address.toStdString() +
+                               "\" has no valid port: enter it as HOST or HOST:PORT (RDT port 49152).");
+    options.port = uint16_t(port);
+  }
+  return options;
+}
+
+// Reads the RSI files, starts listening; for the built-in simulator also the simulated sensor and
+// KRC (sending to the port the arm listens on).
+void openKuka(Link& link, const SessionTarget& target) {
+  const bool simulated = target.kind == SessionTarget::Kind::kKukaSimulator;
+  xmate::arm::RsiArmConfig config;
+  config.model = target.kuka_model.toStdString();
+  config.context_path = kukaContext(target);
+  config.ethernet_config_path = simulated ? std::string() : target.rsi_config.toStdString();
+  if (simulated) {
+    config.link.bind_ip = "127.0.0.1";
+    config.link.port = 0;          // a free port
+    config.link.silence_ms = 1000;  // a loaded PC may pause the simulated KRC; only its own faults are silence
+  }
+  link.rsi = std::make_unique<xmate::arm::RsiArm>(config);
+  link.rsi->start();
+  link.arm = link.rsi.get();
+  if (simulated) {
+    xmate::sim::FtSensorConfig sensor;
+    sensor.port = 0;
+    link.ft_simulator = std::make_unique<xmate::sim::SimulatedFtSensor>(sensor);
+    link.ft_simulator->start();
+    xmate::sim::KrcServerConfig krc;
+    krc.krc.context_path = config.context_path;
+    krc.krc.model = config.model;
+    krc.target_ip = "127.0.0.1";
+    krc.target_port = link.rsi->link().port();
+    krc.ft_sensor = link.ft_simulator.get();
+    link.krc = std::make_unique<xmate::sim::KrcServer>(krc);
+    link.krc->start();
+    xmate::ft::NetFtOptions options;
+    options.host = "127.0.0.1";
+    options.port = link.ft_simulator->port();
+    link.ft = std::make_unique<xmate::ft::NetFtClient>(options);
+  } else if (!target.ft_sensor.trimmed().isEmpty()) {
+    link.ft = std::make_unique<xmate::ft::NetFtClient>(sensorOptions(target.ft_sensor));
+  }
+  if (link.ft) link.ft->start();
+}
+
+void stopKuka(Link& link) {
+  if (link.krc) link.krc->stop();
+  if (link.rsi) link.rsi->stop();
+  if (link.ft) link.ft->stop();
+  if (link.ft_simulator) link.ft_simulator->stop();
+}
+
+std::string kukaFailure(const SessionTarget& target, const std::exception& e) {
+  if (target.kind == SessionTarget::Kind::kKukaSimulator)
+    return std::string("Could not start the built-in KUKA simulator: ") + e.what();
+  return "Could not listen for the KUKA robot (" + target.rsi_config.toStdString() + "): " + e.what();
+}
+
 }  // namespace
 
 std::unique_ptr<Link> openLink(const SessionTarget& target) {
   auto link = std::make_unique<Link>();
+  link->target = target;
+  if (target.isKuka()) {
+    try {
+      openKuka(*link, target);
+    } catch (const std::exception& e) {
+      stopKuka(*link);
+      throw std::runtime_error(kukaFailure(target, e));
+    }
+    return link;
+  }
   link->target = target;
   std::string host = target.host.toStdString();
   uint16_t port = target.port;
@@ -44,6 +144,8 @@ std::unique_ptr<Link> openLink(const SessionTarget& target) {
     link->robot = std::make_unique<xmate::Robot>(host, port, target.type);
     link->robot->connect();
     link->model = std::make_unique<xmate::XmateModel>(link->robot.get(), target.type);
+    link->rci_arm = std::make_unique<xmate::arm::RciArm>(*link->robot);
+    link->arm = link->rci_arm.get();
   } catch (const std::exception& e) {
     link->robot.reset();
     if (link->server) link->server->stop();
@@ -53,6 +155,7 @@ std::unique_ptr<Link> openLink(const SessionTarget& target) {
 }
 
 bool reconnectLink(Link& link) {
+  if (!link.robot) return false;  // RSI starts again by itself: the RSI arm counts a new session
   using namespace std::chrono;
   const bool simulated = link.server != nullptr;
   const auto deadline = steady_clock::now() + (simulated ? seconds(10) : seconds(60));
@@ -82,10 +185,13 @@ bool shutdownLink(Link& link) {
   // kSessionClosed, TCP requests fail fast instead of waiting for their timeouts.
   if (link.server) link.server->stop();
   if (link.robot) link.robot->connection().close();
+  stopKuka(link);  // a streamed KUKA motion ends: the robot stops sending
   bool joined = true;
   if (link.motions) joined = link.motions->stop(kWorkerEndWait) && joined;
   if (link.commands) joined = link.commands->stop(kWorkerEndWait) && joined;
   if (!joined) return false;
+  link.arm = nullptr;
+  link.rci_arm.reset();
   link.robot.reset();
   return true;
 }
@@ -101,6 +207,19 @@ PollResult pollRobot(xmate::Robot& robot) {
     result.ok = true;
   } catch (const std::exception&) {
     result.ok = false;  // the tick's watchdog reports a controller that stopped answering
+  }
+  return result;
+}
+
+PollResult pollArm(xmate::arm::Arm& arm) {
+  PollResult result;
+  try {
+    const size_t inputs = std::min<size_t>(arm.inputNames().size(), 64);
+    for (size_t i = 0; i < inputs; ++i)
+      if (arm.input(i)) result.kuka_inputs |= uint64_t{1} << i;
+    result.ok = true;
+  } catch (const std::exception&) {
+    result.ok = false;  // no <Rob> yet: the inputs are unknown
   }
   return result;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Link: what one open session holds (robot client, embedded simulator, model, worker threads), how
-// it is opened (on a background thread) and torn down. Used by session.cpp only.
+// Link: what one open session holds (an xMate's robot client and embedded simulator, or a KUKA's
+// RSI arm, F/T sensor and simulated KRC; the arm::Arm over either; worker threads), how it is opened
+// (on a background thread) and torn down. Used by session.cpp only.
 #pragma once
 
 #include <array>
@@ -12,8 +13,12 @@
 #include <xmate/model.h>
 #include <xmate/robot.h>
 
+#include "arm/rsi_arm.h"
+#include "ft/netft.h"
 #include "session/job_worker.h"
 #include "session/session.h"
+#include "sim/ft_sensor.h"
+#include "sim/krc_server.h"
 #include "sim/server.h"
 
 namespace rci::ui {
@@ -28,17 +33,28 @@ struct MotionFlags {
 
 struct Link {
   SessionTarget target;
+  // An xMate:
   std::unique_ptr<xmate::sim::Server> server;  // kSimulator only
   std::unique_ptr<xmate::Robot> robot;
   std::unique_ptr<xmate::XmateModel> model;    // GUI thread only (external joint torques)
+  // A KUKA:
+  std::unique_ptr<xmate::sim::SimulatedFtSensor> ft_simulator;  // kKukaSimulator only
+  std::unique_ptr<xmate::arm::RsiArm> rsi;
+  std::unique_ptr<xmate::sim::KrcServer> krc;  // kKukaSimulator only
+  std::unique_ptr<xmate::ft::NetFtClient> ft;         // when a sensor is configured (always in the simulator)
+  // Either: the RCI arm over `robot`, or `rsi` itself.
+  std::unique_ptr<xmate::arm::Arm> rci_arm;
+  xmate::arm::Arm* arm = nullptr;
   std::unique_ptr<JobWorker> commands;         // run() jobs and the 5 Hz poll
   std::unique_ptr<JobWorker> motions;          // runMotion() jobs
   std::atomic<bool> closing{false};            // set by shutdownLink: a running reconnect gives up
   MotionFlags motion;
 };
 
-// Starts the simulator (kSimulator) and connects the robot client. Blocking: call it off the GUI
-// thread. Throws std::runtime_error whose message says what failed and what to do.
+// xMate: starts the simulator (kSimulator) and connects the robot client. KUKA: reads the RSI
+// files and starts listening for the robot (and the simulated KRC and sensor, kKukaSimulator; the
+// sensor's client when one is configured). Blocking: call it off the GUI thread. Throws
+// std::runtime_error whose message says what failed and what to do.
 std::unique_ptr<Link> openLink(const SessionTarget& target);
 
 // How long shutdownLink lets a motion end by itself after its stop token was set, before it sends
@@ -65,9 +81,12 @@ struct PollResult {
   int safety_stop = 1;
   std::array<bool, 6> digital_in{};
   std::array<double, 16> tool{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  uint64_t kuka_inputs = 0;  // a KUKA: bit k = input k of the arm's inputNames()
 };
 // Runs on the command worker thread (it owns the robot's TCP commands).
 PollResult pollRobot(xmate::Robot& robot);
+// A KUKA's wired inputs (the newest <Rob>); the command worker.
+PollResult pollArm(xmate::arm::Arm& arm);
 
 // tau = J(q)^T * wrench: the external wrench at the TCP mapped to joint torques.
 std::array<double, 7> externalJointTorques(xmate::XmateModel& model, const std::array<double, 7>& q,

@@ -2,6 +2,10 @@
 // Names of robot models and session targets as the window shows them (session.h).
 #include "session/session.h"
 
+#include <QFileInfo>
+
+#include <stdexcept>
+
 namespace rci::ui {
 
 QString modelName(xmate::XmateType type) {
@@ -24,9 +28,25 @@ bool parseModel(const QString& text, xmate::XmateType& type) {
   return true;
 }
 
+const xmate::model::RobotSpec& SessionTarget::spec() const {
+  if (!isKuka()) return xmate::model::robotSpec(type);
+  const xmate::model::RobotSpec* found = xmate::model::findRobotSpec(kuka_model.toStdString());
+  if (!found || found->family != xmate::model::RobotFamily::kKuka)
+    throw std::invalid_argument("unknown KUKA model \"" + kuka_model.toStdString() + "\" (kr6_r900_sixx, kr16_2)");
+  return *found;
+}
+
 QString SessionTarget::describe() const {
-  if (kind == Kind::kSimulator) return QStringLiteral("Simulator (%1)").arg(modelName(type));
-  return QStringLiteral("Robot %1:%2 (%3)").arg(host).arg(port).arg(modelName(type));
+  switch (kind) {
+    case Kind::kSimulator: return QStringLiteral("Simulator (%1)").arg(modelName(type));
+    case Kind::kRobot: return QStringLiteral("Robot %1:%2 (%3)").arg(host).arg(port).arg(modelName(type));
+    default: break;
+  }
+  const xmate::model::RobotSpec* found = xmate::model::findRobotSpec(kuka_model.toStdString());
+  const QString model = found ? QString::fromUtf8(found->display_name.data(), qsizetype(found->display_name.size()))
+                              : kuka_model;
+  if (kind == Kind::kKukaSimulator) return QStringLiteral("KUKA simulator (%1)").arg(model);
+  return QStringLiteral("KUKA over RSI, %1 (%2)").arg(QFileInfo(rsi_config).fileName(), model);
 }
 
 }  // namespace rci::ui

@@ -170,6 +170,7 @@ void MainWindow::buildDocks() {
   for (const PanelSpec& spec : createPanels(session_, this)) {
     QWidget* content = spec.scrolls_itself ? spec.widget : scrollable(spec.widget);
     QDockWidget* dock = addDock(spec.id, spec.title, content, spec.area);
+    if (spec.applies) gated_docks_.emplace_back(dock, spec.applies);
     auto [it, inserted] = first.emplace(spec.area, dock);
     if (!inserted) tabifyDockWidget(it->second, dock);
   }
@@ -277,6 +278,19 @@ void MainWindow::buildMenus() {
   });
 }
 
+void MainWindow::showApplicablePanels() {
+  for (const auto& [dock, applies] : gated_docks_) {
+    const bool applicable = applies();
+    dock->toggleViewAction()->setVisible(applicable);
+    if (!applicable && !dock->isHidden()) {
+      dock->hide();
+      hidden_for_robot_.insert(dock);
+    } else if (applicable && hidden_for_robot_.erase(dock) > 0) {
+      dock->show();
+    }
+  }
+}
+
 void MainWindow::connectSession() {
   connect(bar_, &ConnectionBar::connectRequested, this, [this](const SessionTarget& target) { connectTo(target); });
   connect(bar_, &ConnectionBar::disconnectRequested, this, [this] { disconnectFromTarget(); });
@@ -285,6 +299,7 @@ void MainWindow::connectSession() {
     log_->addError(reason);
   });
   connect(&session_, &Session::opened, this, [this] {
+    showApplicablePanels();
     bar_->setState(ConnectionBar::State::kConnected);
     banner_->hide();
     strip_->refresh();

@@ -8,6 +8,9 @@
 #include <QIcon>
 #include <QMainWindow>
 
+#include <functional>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "session/session.h"
@@ -73,6 +76,9 @@ class MainWindow : public QMainWindow {
   int sideTabBarWidth(Qt::DockWidgetArea area) const;
   void updateTitle();
   void showFullTabNames();
+  // After a session opened: hides the docks of panels that do not apply to its robot (and shows
+  // again those hidden for an earlier one that apply now); their View menu entries follow.
+  void showApplicablePanels();
   // Toolbar / Esc: asks the running motion to stop (Session::requestStop) and logs it.
   void stopMotion();
 
@@ -84,6 +90,8 @@ class MainWindow : public QMainWindow {
   StatusStrip* strip_ = nullptr;
   QAction* stop_motion_ = nullptr;
   std::vector<QDockWidget*> docks_;
+  std::vector<std::pair<QDockWidget*, std::function<bool()>>> gated_docks_;  // panels that may not apply
+  std::set<QDockWidget*> hidden_for_robot_;  // hidden by showApplicablePanels, not by the operator
   QByteArray default_state_;
   bool layout_restored_ = false;  // a saved layout was restored: keep its dock sizes
   bool shown_once_ = false;

@@ -32,6 +32,8 @@ struct PanelSpec {
   QWidget* widget = nullptr;
   Qt::DockWidgetArea area = Qt::RightDockWidgetArea;
   bool scrolls_itself = false;
+  // Whether the panel applies to the open session (its dock is hidden otherwise); empty: always.
+  std::function<bool()> applies;
 };
 std::vector<PanelSpec> createPanels(Session& session, QWidget* parent);
 // ui/panels: before the window closes, offers to save a modified program (the Program panel under

@@ -24,7 +24,7 @@ enum class Capability : uint32_t {
   kPowerControl = 1u << 4,      // motors on/off and error recovery from the PC
   kBuiltInGuiding = 1u << 5,    // the controller's own hand guiding (the xMate's drag)
   kCorrectionLimits = 1u << 6,  // motions stay within limits around where the session started (RSI)
-  kControllerSafety = 1u << 7,  // collision thresholds, safety box, soft limits, filters on the controller
+  kControllerSafety = 1u << 7,  // settings on the controller: collision thresholds, safety box, soft limits, filters, tool, impedance
   kDigitalIo = 1u << 8,         // digital inputs and outputs reachable from the PC
 };
 using Capabilities = uint32_t;

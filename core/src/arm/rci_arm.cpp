@@ -47,6 +47,12 @@ void checkSignal(size_t index, const char* kind) {
 
 }  // namespace
 
+ArmSample armSample(const client::StateSample& s) {
+  ArmSample a = sampleOf(s, s.tcp_position);
+  a.time = s.time;
+  return a;
+}
+
 RciArm::RciArm(Robot& robot) : robot_(robot), spec_(&model::robotSpec(robot.type())) {}
 
 Capabilities RciArm::capabilities() const {
@@ -66,9 +72,7 @@ size_t RciArm::takeSamples(ArmSample* out, size_t max) {
   size_t n = 0;
   client::StateSample s;
   while (n < max && robot_.connection().samples().pop(s)) {
-    ArmSample& a = out[n++];
-    a = sampleOf(s, s.tcp_position);
-    a.time = s.time;
+    out[n++] = armSample(s);
   }
   return n;
 }

@@ -7,8 +7,13 @@
 #include <xmate/robot.h>
 
 #include "arm/arm.h"
+#include "client/state_sample.h"
 
 namespace xmate::arm {
+
+// One cycle of the client's sample ring as an ArmSample (what takeSamples() gives), for a consumer
+// that pops the ring itself. Real-time safe.
+ArmSample armSample(const client::StateSample& s);
 
 class RciArm : public Arm {
  public:

@@ -67,6 +67,7 @@ RsiArm::RsiArm(const RsiArmConfig& config) : context_(rsi::readContext(config.co
   stream_ = std::make_unique<rsi::JointStream>(*link_, *spec_, rsi::axisCorrectionLimits(context_));
   rsi::DigitalIoMap map = rsi::digitalIoMap(context_, config_);
   if (!map.inputs.empty() || !map.outputs.empty()) io_ = std::make_unique<rsi::DigitalIo>(*link_, std::move(map));
+  monitor_ = std::make_unique<rsi::SessionMonitor>(*link_, context_);
 
   static const char* const kAxes[6] = {"A1", "A2", "A3", "A4", "A5", "A6"};
   static const char* const kPose[6] = {"X", "Y", "Z", "A", "B", "C"};
@@ -124,6 +125,7 @@ size_t RsiArm::takeSamples(ArmSample* out, size_t max) {
   size_t n = 0;
   rsi::LinkSample brief;
   while (n < max && link_->samples().pop(brief)) {
+    monitor_->add(brief);
     if (brief.session != counted_session_) {
       counted_session_ = brief.session;
       counted_cycles_ = 0;

@@ -14,6 +14,7 @@
 #include "rsi/digital_io.h"
 #include "rsi/joint_stream.h"
 #include "rsi/link.h"
+#include "rsi/session_monitor.h"
 
 namespace xmate::arm {
 
@@ -57,6 +58,9 @@ class RsiArm : public Arm {
   rsi::Link& link() { return *link_; }
   rsi::JointStream& stream() { return *stream_; }
   rsi::DigitalIo* digitalIo() { return io_.get(); }  // nullptr: the context wires no IO
+  // The session as the samples takeSamples() popped show it (waiting / running / stopped and why,
+  // cycle, Delay, answer p99). The thread that calls takeSamples(), after it.
+  rsi::SessionStatus sessionStatus() const { return monitor_->status(link_->receiving()); }
 
  private:
   struct Slots {  // decoder slots of the values an ArmSample carries (-1: not sent)
@@ -70,6 +74,7 @@ class RsiArm : public Arm {
   std::unique_ptr<rsi::Link> link_;
   std::unique_ptr<rsi::JointStream> stream_;
   std::unique_ptr<rsi::DigitalIo> io_;
+  std::unique_ptr<rsi::SessionMonitor> monitor_;  // fed by takeSamples
   Slots slots_;
   Capabilities capabilities_ = 0;
   int64_t epoch_ns_ = 0;

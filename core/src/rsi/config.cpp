@@ -292,4 +292,23 @@ Context parseContext(std::string_view text, const std::string& name) {
 
 Context readContext(const std::string& path) { return parseContext(readTextFile(path, "RSI context"), path); }
 
+std::vector<std::string> contextsNaming(const std::string& ethernet_config_path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path config = fs::weakly_canonical(ethernet_config_path, error);
+  std::vector<std::string> found;
+  for (const fs::directory_entry& entry : fs::directory_iterator(config.parent_path(), error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() < 8 || name.compare(name.size() - 8, 8, ".rsi.xml") != 0) continue;
+    try {
+      if (fs::weakly_canonical(readContext(entry.path().string()).ethernetConfigPath()) == config)
+        found.push_back(entry.path().string());
+    } catch (const std::exception&) {
+      // Not a context we can read: not the one.
+    }
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
 }  // namespace xmate::rsi

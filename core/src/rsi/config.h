@@ -102,4 +102,9 @@ double numberParameter(const Context& context, const Object& object, std::string
 Context readContext(const std::string& path);
 Context parseContext(std::string_view text, const std::string& name);
 
+// The RSI contexts (NAME.rsi.xml) in the directory of `ethernet_config_path` whose ETHERNET object
+// names that file -- the context the robot runs, when only its Ethernet config was given. Files
+// that cannot be read are skipped. Any thread; reads files.
+std::vector<std::string> contextsNaming(const std::string& ethernet_config_path);
+
 }  // namespace xmate::rsi

@@ -178,4 +178,16 @@ std::string JointStream::checkSample(const double* q, const double* previous, do
   return {};
 }
 
+bool JointStream::reachableBounds(std::array<double, 7>& lower, std::array<double, 7>& upper) const {
+  StreamState s;
+  if (!state(s)) return false;
+  lower = {};
+  upper = {};
+  for (size_t i = 0; i < 6; ++i) {
+    lower[i] = std::max(s.q_on[i] + limits_.lower[i], spec_.q_min[i]);
+    upper[i] = std::min(s.q_on[i] + limits_.upper[i], spec_.q_max[i]);
+  }
+  return true;
+}
+
 }  // namespace xmate::rsi

@@ -80,6 +80,10 @@ class JointStream {
   double cycleSeconds() const { return cycle_s_; }
   const model::RobotSpec& spec() const { return spec_; }
   const AxisCorrectionLimits& limits() const { return limits_; }
+  // The joints (rad) this RSI session can reach: the start pose q_on plus the correction limits,
+  // within the axis ranges (entries past the sixth: 0). False until the first <Rob>. Any thread,
+  // lock-free, real-time safe.
+  bool reachableBounds(std::array<double, 7>& lower, std::array<double, 7>& upper) const;
 
  private:
   Correction onCycle(const RobDecoder& rob);

@@ -25,20 +25,32 @@ Target targetFromState(const RCI::robot::RobotState& state, const model::RobotSp
   return t;
 }
 
-std::string adoptTool(Program& program, const RCI::robot::RobotState& state, const std::array<double, 16>& tool,
-                      const Payload& load) {
+Target targetFromArm(const arm::ArmState& state, const model::RobotSpec& robot) {
+  Target t;
+  t.has_q = true;
+  t.q = state.sample.q;
+  for (size_t j = size_t(robot.dof); j < t.q.size(); ++j) t.q[j] = 0;
+  t.has_pose = true;
+  t.pose = state.tcp;
+  t.has_psi = true;
+  t.psi = 0;
+  return t;
+}
+
+std::string adoptTool(Program& program, const std::array<double, 7>& q, const std::array<double, 16>& measured_tcp,
+                      const std::array<double, 16>& tool, const Payload& load) {
   if (program.has_tool) {
-    const ToolMismatch mismatch = toolMismatch(program, state.q, state.toolTobase_pos_m);
+    const ToolMismatch mismatch = toolMismatch(program, q, measured_tcp);
     return toolMatches(mismatch) ? std::string() : toolMismatchText(mismatch, program);
   }
   if (!program.instructions.empty()) return {};  // taught before tools were recorded: unknown
   Program taught = program;
   taught.has_tool = true;
   taught.tool = tool;
-  if (!toolMatches(toolMismatch(taught, state.q, state.toolTobase_pos_m))) {
+  if (!toolMatches(toolMismatch(taught, q, measured_tcp))) {
     const model::ArmKinematics flange_model(*program.robot);  // identity tool: the flange
-    const Eigen::Isometry3d flange = planning::poseFromRowMajor(flange_model.GetCartPose(state.q), "flange");
-    const Eigen::Isometry3d tcp = planning::poseFromRowMajor(state.toolTobase_pos_m, "measured TCP");
+    const Eigen::Isometry3d flange = planning::poseFromRowMajor(flange_model.GetCartPose(q), "flange");
+    const Eigen::Isometry3d tcp = planning::poseFromRowMajor(measured_tcp, "measured TCP");
     taught.tool = planning::poseToRowMajor(flange.inverse() * tcp);
   }
   taught.load = load;
