@@ -5,26 +5,32 @@
 #include <QSaveFile>
 
 #include <charconv>
+#include <cmath>
 
 namespace rci::ui::plots {
 
-QString csvColumnName(int channel) {
+QString csvColumnName(int channel, const QString& joint_prefix) {
   const Signal signal = signalOfChannel(channel);
-  return QStringLiteral("%1_J%2_%3")
-      .arg(signalKey(signal))
-      .arg(jointOfChannel(channel) + 1)
-      .arg(QString(quantityUnit(quantityOf(signal))).replace(QLatin1Char('/'), QStringLiteral("_per_")));
+  QString name = signalKey(signal);
+  const QString member = isJointSignal(signal) ? joint_prefix + QString::number(jointOfChannel(channel) + 1)
+                                               : componentName(signal, jointOfChannel(channel));
+  if (!member.isEmpty()) name += QLatin1Char('_') + member;
+  const QString unit = signalUnit(signal);
+  if (!unit.isEmpty()) name += QLatin1Char('_') + QString(unit).replace(QLatin1Char('/'), QStringLiteral("_per_"));
+  return name;
 }
 
 namespace {
 
-QByteArray headerLine(const std::vector<int>& channels) {
+QByteArray headerLine(const std::vector<int>& channels, const QString& joint_prefix) {
   QByteArray line("time_s");
-  for (int channel : channels) line += ',' + csvColumnName(channel).toLatin1();
+  for (int channel : channels) line += ',' + csvColumnName(channel, joint_prefix).toLatin1();
   return line + '\n';
 }
 
+// A value that is not there (no sensor reading, the first velocity) is an empty field.
 void appendNumber(QByteArray& line, double value) {
+  if (!std::isfinite(value)) return;
   char text[32];
   const auto result = std::to_chars(text, text + sizeof text, value);
   line.append(text, static_cast<qsizetype>(result.ptr - text));
@@ -43,6 +49,12 @@ void appendRow(QByteArray& line, const PlotBuffer& buffer, int index, const std:
 
 bool writeCsv(const PlotBuffer& buffer, IndexRange range, const std::vector<int>& channels, const QString& path,
               QString* error, const std::function<bool(int rows_done)>& keep_going) {
+  return writeCsv(buffer, range, channels, QStringLiteral("J"), path, error, keep_going);
+}
+
+bool writeCsv(const PlotBuffer& buffer, IndexRange range, const std::vector<int>& channels,
+              const QString& joint_prefix, const QString& path, QString* error,
+              const std::function<bool(int rows_done)>& keep_going) {
   auto fail = [error](const QString& message) {
     if (error != nullptr) *error = message;
     return false;
@@ -52,7 +64,7 @@ bool writeCsv(const PlotBuffer& buffer, IndexRange range, const std::vector<int>
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly))
     return fail(QStringLiteral("Cannot write %1: %2. Choose a folder you can write to.").arg(path, file.errorString()));
-  QByteArray chunk = headerLine(channels);
+  QByteArray chunk = headerLine(channels, joint_prefix);
   for (int i = range.first; i < range.last; ++i) {
     appendRow(chunk, buffer, i, channels);
     const int rows = i - range.first + 1;

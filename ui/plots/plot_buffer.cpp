@@ -7,13 +7,21 @@
 
 namespace rci::ui::plots {
 
-PlotBuffer::PlotBuffer(double seconds, double rate_hz)
-    : PlotBuffer(static_cast<int>(std::max(1.0, std::ceil(seconds * rate_hz)))) {}
+PlotBuffer::PlotBuffer(double seconds, double rate_hz, const std::vector<int>& kept_channels)
+    : PlotBuffer(static_cast<int>(std::max(1.0, std::ceil(seconds * rate_hz))), kept_channels) {}
 
-PlotBuffer::PlotBuffer(int capacity)
-    : capacity_(std::max(1, capacity)),
-      times_(static_cast<std::size_t>(capacity_)),
-      values_(static_cast<std::size_t>(capacity_) * kChannelCount) {}
+PlotBuffer::PlotBuffer(int capacity, const std::vector<int>& kept_channels)
+    : capacity_(std::max(1, capacity)), times_(static_cast<std::size_t>(capacity_)) {
+  column_.fill(-1);
+  for (int c : kept_channels)
+    if (c >= 0 && c < kChannelCount) column_[static_cast<std::size_t>(c)] = 0;
+  for (int c = 0; c < kChannelCount; ++c) {
+    if (!kept_channels.empty() && column_[static_cast<std::size_t>(c)] < 0) continue;
+    column_[static_cast<std::size_t>(c)] = static_cast<int>(kept_.size());
+    kept_.push_back(c);
+  }
+  values_.resize(static_cast<std::size_t>(capacity_) * kept_.size());
+}
 
 void PlotBuffer::clear() {
   size_ = 0;
@@ -31,7 +39,7 @@ bool PlotBuffer::push(double t, const ChannelValues& values) {
     head_ = (head_ + 1) % capacity_;
   }
   times_[static_cast<std::size_t>(at)] = t;
-  for (int c = 0; c < kChannelCount; ++c) values_[channelBase(c) + static_cast<std::size_t>(at)] = values[c];
+  for (int c : kept_) values_[channelBase(c) + static_cast<std::size_t>(at)] = values[static_cast<std::size_t>(c)];
   return true;
 }
 
@@ -67,7 +75,7 @@ IndexRange PlotBuffer::window(double from, double to) const {
 int PlotBuffer::spans(int channel, IndexRange range, std::array<SampleSpan, 2>& out) const {
   const int first = std::clamp(range.first, 0, size_);
   const int last = std::clamp(range.last, first, size_);
-  if (last == first) return 0;
+  if (last == first || !keeps(channel)) return 0;
   const int start = slot(first);
   const int run = std::min(last - first, capacity_ - start);
   const double* values = values_.data() + channelBase(channel);
@@ -80,10 +88,10 @@ int PlotBuffer::spans(int channel, IndexRange range, std::array<SampleSpan, 2>& 
 PlotBuffer PlotBuffer::copyRange(IndexRange range) const {
   const int first = std::clamp(range.first, 0, size_);
   const int last = std::clamp(range.last, first, size_);
-  PlotBuffer copy(last - first);
+  PlotBuffer copy(last - first, kept_);
   ChannelValues values{};
   for (int i = first; i < last; ++i) {
-    for (int c = 0; c < kChannelCount; ++c) values[c] = value(c, i);
+    for (int c : kept_) values[static_cast<std::size_t>(c)] = value(c, i);
     copy.push(time(i), values);
   }
   return copy;
@@ -91,9 +99,9 @@ PlotBuffer PlotBuffer::copyRange(IndexRange range) const {
 
 void channelsOf(const xmate::client::StateSample& sample, const std::array<double, 7>& tau_ext,
                 ChannelValues& out) {
-  const std::array<const std::array<double, 7>*, kSignalCount> sources{
+  const std::array<const std::array<double, 7>*, 6> sources{
       &sample.q, &sample.q_c, &sample.dq_m, &sample.tau_m, &sample.tau_c, &tau_ext};
-  for (int s = 0; s < kSignalCount; ++s)
+  for (int s = 0; s < static_cast<int>(sources.size()); ++s)
     for (int j = 0; j < kJointCount; ++j) out[static_cast<std::size_t>(s * kJointCount + j)] = (*sources[s])[j];
 }
 

@@ -7,8 +7,15 @@ namespace rci::ui::plots {
 Quantity quantityOf(Signal signal) {
   switch (signal) {
     case Signal::kPositionMeasured:
-    case Signal::kPositionCommanded: return Quantity::kPosition;
-    case Signal::kVelocityMeasured: return Quantity::kVelocity;
+    case Signal::kPositionCommanded:
+    case Signal::kAxisActual:
+    case Signal::kAxisSetPoint: return Quantity::kPosition;
+    case Signal::kVelocityMeasured:
+    case Signal::kAxisVelocity: return Quantity::kVelocity;
+    case Signal::kMotorCurrent: return Quantity::kMotorCurrent;
+    case Signal::kSensorForce:
+    case Signal::kSensorTorque: return Quantity::kForce;
+    case Signal::kLateAnswers: return Quantity::kDelay;
     default: return Quantity::kTorque;
   }
 }
@@ -17,6 +24,9 @@ QString quantityTitle(Quantity quantity) {
   switch (quantity) {
     case Quantity::kPosition: return QStringLiteral("Joint position");
     case Quantity::kVelocity: return QStringLiteral("Joint velocity");
+    case Quantity::kMotorCurrent: return QStringLiteral("Motor current");
+    case Quantity::kForce: return QStringLiteral("Force sensor");
+    case Quantity::kDelay: return QStringLiteral("Late answers");
     default: return QStringLiteral("Joint torque");
   }
 }
@@ -25,15 +35,28 @@ QString quantityUnit(Quantity quantity) {
   switch (quantity) {
     case Quantity::kPosition: return QStringLiteral("rad");
     case Quantity::kVelocity: return QStringLiteral("rad/s");
+    case Quantity::kMotorCurrent: return QStringLiteral("A");
+    case Quantity::kForce: return QStringLiteral("N, Nm");
+    case Quantity::kDelay: return QStringLiteral("count");
     default: return QStringLiteral("Nm");
   }
 }
+
+bool quantityCollapses(Quantity quantity) { return static_cast<int>(quantity) >= kQuantityCount; }
 
 QString signalLabel(Signal signal) {
   switch (signal) {
     case Signal::kPositionCommanded:
     case Signal::kTorqueCommanded: return QStringLiteral("commanded");
     case Signal::kTorqueExternal: return QStringLiteral("external");
+    case Signal::kAxisActual:
+    case Signal::kAxisVelocity: return QStringLiteral("actual");
+    case Signal::kAxisSetPoint: return QStringLiteral("set-point");
+    case Signal::kGearTorque: return QStringLiteral("gear");
+    case Signal::kMotorCurrent: return QStringLiteral("motor");
+    case Signal::kSensorForce: return QStringLiteral("force");
+    case Signal::kSensorTorque: return QStringLiteral("torque");
+    case Signal::kLateAnswers: return QStringLiteral("late answers");
     default: return QStringLiteral("measured");
   }
 }
@@ -45,7 +68,43 @@ QString signalKey(Signal signal) {
     case Signal::kVelocityMeasured: return QStringLiteral("dq");
     case Signal::kTorqueMeasured: return QStringLiteral("tau");
     case Signal::kTorqueCommanded: return QStringLiteral("tau_c");
-    default: return QStringLiteral("tau_ext");
+    case Signal::kTorqueExternal: return QStringLiteral("tau_ext");
+    case Signal::kAxisActual: return QStringLiteral("q");
+    case Signal::kAxisSetPoint: return QStringLiteral("q_set");
+    case Signal::kAxisVelocity: return QStringLiteral("dq");
+    case Signal::kGearTorque: return QStringLiteral("tau_gear");
+    case Signal::kMotorCurrent: return QStringLiteral("current");
+    case Signal::kSensorForce:
+    case Signal::kSensorTorque: return QStringLiteral("ft");
+    default: return QStringLiteral("rsi_late_answers");
+  }
+}
+
+QString signalUnit(Signal signal) {
+  switch (signal) {
+    case Signal::kSensorForce: return QStringLiteral("N");
+    case Signal::kSensorTorque: return QStringLiteral("Nm");
+    case Signal::kLateAnswers: return QString();
+    default: return quantityUnit(quantityOf(signal));
+  }
+}
+
+bool isJointSignal(Signal signal) {
+  return signal != Signal::kSensorForce && signal != Signal::kSensorTorque && signal != Signal::kLateAnswers;
+}
+
+int componentCount(Signal signal) {
+  if (isJointSignal(signal)) return kJointCount;
+  return signal == Signal::kLateAnswers ? 1 : 3;
+}
+
+QString componentName(Signal signal, int component) {
+  static const char axes[] = {'x', 'y', 'z'};
+  if (component < 0 || component >= 3) return QString();
+  switch (signal) {
+    case Signal::kSensorForce: return QStringLiteral("F") + QLatin1Char(axes[component]);
+    case Signal::kSensorTorque: return QStringLiteral("T") + QLatin1Char(axes[component]);
+    default: return QString();
   }
 }
 

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// createPlotsWidget (ui/window/parts.h): builds the live plot area and feeds it from a Session --
-// samples on samplesArrived, the arm's joint count and J^T model (with the tool) when it opens.
+// createPlotsWidget (ui/window/parts.h): builds the live plot area and feeds it from a Session -- an
+// xMate's state samples on samplesArrived (with its joint count and J^T model, with the tool), any
+// other arm's samples on armSamplesArrived (with the signals its capabilities and sensor offer).
 #include <exception>
 
+#include "arm/arm.h"
 #include "model/robot_spec.h"
 #include "plots/plots_widget.h"
 #include "session/session.h"
@@ -25,10 +27,29 @@ std::unique_ptr<plots::ExternalTorqueMap> makeTorqueMap(Session& session) {
   }
 }
 
+// The signal set of the open session: the xMate's state samples when its client is there, else what
+// the arm offers (its capabilities, the F/T sensor, RSI's late-answer count).
+plots::PlotSetup setupOf(Session& session) {
+  xmate::arm::Arm* arm = session.arm();
+  if (session.robot() != nullptr || arm == nullptr) return plots::xmateSetup();
+  return plots::armSetup(session.spec(), arm->capabilities(), arm->cycleSeconds(), session.live().has_force_sensor,
+                         session.rsiArm() != nullptr);
+}
+
 void onOpened(Session& session, plots::PlotsWidget* plots) {
+  plots->configure(setupOf(session));
   plots->clear();  // the session clock restarts at 0
   if (xmate::Robot* robot = session.robot()) plots->setJointCount(xmate::model::robotSpec(robot->type()).dof);
   plots->setExternalTorqueMap(makeTorqueMap(session));
+}
+
+// This display tick's values of what the session reports per tick, not per cycle.
+plots::ArmExtras extrasOf(const LiveState& live) {
+  plots::ArmExtras extras;
+  extras.force_valid = live.has_force_sensor && live.force_reading;
+  extras.force = live.force;
+  extras.late_answers = live.rsi.delay;
+  return extras;
 }
 
 // A command may have changed the tool (setCoor): the wrench then refers to the new TCP.
@@ -49,6 +70,11 @@ QWidget* createPlotsWidget(Session& session, QWidget* parent) {
   plots->setObjectName(QStringLiteral("plots"));
   QObject::connect(&session, &Session::samplesArrived, plots,
                    [plots](const xmate::client::StateSample* samples, int count) { plots->addSamples(samples, count); },
+                   Qt::DirectConnection);
+  QObject::connect(&session, &Session::armSamplesArrived, plots,
+                   [&session, plots](const xmate::arm::ArmSample* samples, int count) {
+                     if (plots->recordsArmSamples()) plots->addArmSamples(samples, count, extrasOf(session.live()));
+                   },
                    Qt::DirectConnection);
   QObject::connect(&session, &Session::opened, plots, [&session, plots] { onOpened(session, plots); });
   QObject::connect(&session, &Session::commandFinished, plots,

@@ -11,14 +11,22 @@
 
 namespace rci::ui::plots {
 
-PlotsWidget::PlotsWidget(QWidget* parent) : QWidget(parent), buffer_(kBufferSeconds, kSampleRateHz) {
+std::vector<int> keptChannels(const PlotSetup& setup) {
+  std::vector<int> channels;
+  for (Signal signal : setup.offered)
+    for (int k = 0; k < componentCount(signal); ++k) channels.push_back(channelOf(signal, k));
+  std::sort(channels.begin(), channels.end());
+  return channels;
+}
+
+PlotsWidget::PlotsWidget(QWidget* parent)
+    : QWidget(parent), setup_(xmateSetup()), buffer_(kBufferSeconds, setup_.sample_rate_hz, keptChannels(setup_)) {
   joint_on_.fill(true);
-  signal_on_[static_cast<int>(Signal::kPositionMeasured)] = true;
-  signal_on_[static_cast<int>(Signal::kVelocityMeasured)] = true;
-  signal_on_[static_cast<int>(Signal::kTorqueMeasured)] = true;
+  for (Signal signal : setup_.offered) offered_[static_cast<std::size_t>(signal)] = true;
+  for (Signal signal : setup_.ticked) signal_on_[static_cast<std::size_t>(signal)] = true;
   buildUi();
   declareSeries();
-  applyVisibility();
+  applySetup();
   timer_.setInterval(kRedrawIntervalMs);
   connect(&timer_, &QTimer::timeout, this, &PlotsWidget::redraw);
   timer_.start();
@@ -26,7 +34,36 @@ PlotsWidget::PlotsWidget(QWidget* parent) : QWidget(parent), buffer_(kBufferSeco
 
 PlotsWidget::~PlotsWidget() = default;
 
+void PlotsWidget::configure(const PlotSetup& setup) {
+  if (setup == setup_) return;
+  const bool was_frozen = isFrozen();
+  setup_ = setup;
+  offered_.fill(false);
+  signal_on_.fill(false);
+  for (Signal signal : setup_.offered) offered_[static_cast<std::size_t>(signal)] = true;
+  for (Signal signal : setup_.ticked) signal_on_[static_cast<std::size_t>(signal)] = true;
+  joint_count_ = std::clamp(setup_.joints, 1, kJointCount);
+  buffer_ = PlotBuffer(kBufferSeconds, setup_.sample_rate_hz, keptChannels(setup_));
+  frozen_.reset();
+  arm_channels_.setCycleSeconds(setup_.cycle_seconds);
+  arm_channels_.reset();
+  for (AutoScale& scale : scales_) scale.reset();
+  applySetup();
+  updateFreezeControls();
+  redrawNow();
+  if (was_frozen) emit frozenChanged(false);
+}
+
+void PlotsWidget::addArmSamples(const xmate::arm::ArmSample* samples, int count, const ArmExtras& extras) {
+  if (!recordsArmSamples()) return;
+  for (int i = 0; i < count; ++i) {
+    arm_channels_.map(samples[i], extras, scratch_values_);
+    buffer_.push(samples[i].time, scratch_values_);
+  }
+}
+
 void PlotsWidget::addSamples(const xmate::client::StateSample* samples, int count) {
+  if (recordsArmSamples()) return;
   std::array<double, 7> tau_ext{};
   for (int i = 0; i < count; ++i) {
     const xmate::client::StateSample& s = samples[i];
@@ -38,16 +75,24 @@ void PlotsWidget::addSamples(const xmate::client::StateSample* samples, int coun
 
 void PlotsWidget::clear() {
   buffer_.clear();
+  arm_channels_.reset();
   for (AutoScale& scale : scales_) scale.reset();
   if (!isFrozen()) redrawNow();
 }
 
 void PlotsWidget::setExternalTorqueMap(std::unique_ptr<ExternalTorqueMap> map) { map_ = std::move(map); }
 
+bool PlotsWidget::isSignalVisible(Signal signal) const {
+  const auto s = static_cast<std::size_t>(signal);
+  return offered_[s] && signal_on_[s];
+}
+
 bool PlotsWidget::channelVisible(int channel) const {
+  const Signal signal = signalOfChannel(channel);
   const int joint = jointOfChannel(channel);
-  return joint < joint_count_ && joint_on_[static_cast<std::size_t>(joint)] &&
-         signal_on_[static_cast<std::size_t>(signalOfChannel(channel))];
+  if (!isSignalVisible(signal)) return false;
+  if (!isJointSignal(signal)) return joint < componentCount(signal);
+  return joint < joint_count_ && joint_on_[static_cast<std::size_t>(joint)];
 }
 
 std::vector<int> PlotsWidget::visibleChannels() const {
@@ -59,8 +104,11 @@ std::vector<int> PlotsWidget::visibleChannels() const {
 
 std::vector<int> PlotsWidget::allChannels() const {
   std::vector<int> channels;
-  for (int c = 0; c < kChannelCount; ++c)
-    if (jointOfChannel(c) < joint_count_) channels.push_back(c);
+  for (int c = 0; c < kChannelCount; ++c) {
+    const Signal signal = signalOfChannel(c);
+    const int limit = isJointSignal(signal) ? joint_count_ : componentCount(signal);
+    if (offered_[static_cast<std::size_t>(signal)] && jointOfChannel(c) < limit) channels.push_back(c);
+  }
   return channels;
 }
 
@@ -85,7 +133,8 @@ void PlotsWidget::redrawNow() {
   const double x1 = source.empty() ? window_seconds_ : source.newestTime();
   const double x0 = x1 - window_seconds_;
   const IndexRange range = source.window(x0, x1);
-  for (int q = 0; q < kQuantityCount; ++q) drawQuantity(static_cast<Quantity>(q), source, range, x0, x1);
+  for (int q = 0; q < kAllQuantityCount; ++q)
+    if (isChartShown(static_cast<Quantity>(q))) drawQuantity(static_cast<Quantity>(q), source, range, x0, x1);
   updateStatus();
 }
 
@@ -135,7 +184,8 @@ void PlotsWidget::setFrozen(bool frozen) {
 }
 
 bool PlotsWidget::exportCsv(const QString& path, ExportScope scope, QString* error) const {
-  if (scope == ExportScope::kWholeBuffer) return writeCsv(buffer_, {0, buffer_.size()}, allChannels(), path, error);
+  if (scope == ExportScope::kWholeBuffer)
+    return writeCsv(buffer_, {0, buffer_.size()}, allChannels(), setup_.joint_prefix, path, error);
   if (!frozen_) {
     if (error != nullptr) *error = QStringLiteral("The view is not frozen: press Freeze first, then export the view.");
     return false;
@@ -146,7 +196,7 @@ bool PlotsWidget::exportCsv(const QString& path, ExportScope scope, QString* err
     if (error != nullptr) *error = QStringLiteral("No series is shown: tick at least one joint and one signal.");
     return false;
   }
-  return writeCsv(*frozen_, frozen_->window(x1 - window_seconds_, x1), channels, path, error);
+  return writeCsv(*frozen_, frozen_->window(x1 - window_seconds_, x1), channels, setup_.joint_prefix, path, error);
 }
 
 }  // namespace rci::ui::plots

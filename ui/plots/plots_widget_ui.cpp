@@ -31,13 +31,23 @@ QColor jointColour(int joint) {
   return colours[static_cast<std::size_t>(joint % kJointCount)];
 }
 
+QColor componentColour(Signal signal, int component) {
+  if (componentCount(signal) == 1) return QColor(0x44, 0x44, 0x44);
+  static const std::array<QColor, 3> xyz{QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0x1f, 0x5f, 0xd4)};
+  return xyz[static_cast<std::size_t>(component % 3)];
+}
+
 namespace {
 
 Qt::PenStyle penStyle(Signal signal) {
-  const QString label = signalLabel(signal);
-  if (label == QLatin1String("commanded")) return Qt::DashLine;
-  if (label == QLatin1String("external")) return Qt::DotLine;
-  return Qt::SolidLine;
+  switch (signal) {
+    case Signal::kPositionCommanded:
+    case Signal::kTorqueCommanded:
+    case Signal::kAxisSetPoint:
+    case Signal::kSensorTorque: return Qt::DashLine;
+    case Signal::kTorqueExternal: return Qt::DotLine;
+    default: return Qt::SolidLine;
+  }
 }
 
 QIcon lineSample(Qt::PenStyle style) {
@@ -57,6 +67,9 @@ QString axisTitle(Quantity quantity) {
   switch (quantity) {
     case Quantity::kPosition: return QStringLiteral("q [rad]");
     case Quantity::kVelocity: return QStringLiteral("dq [rad/s]");
+    case Quantity::kMotorCurrent: return QStringLiteral("I [A]");
+    case Quantity::kForce: return QStringLiteral("F,T [N,Nm]");  // both ticked
+    case Quantity::kDelay: return QStringLiteral("late");
     default: return QStringLiteral("τ [Nm]");
   }
 }
@@ -69,7 +82,64 @@ QString signalShortName(Signal signal) {
     case Signal::kVelocityMeasured: return QStringLiteral("dq");
     case Signal::kTorqueMeasured: return QStringLiteral("τ");
     case Signal::kTorqueCommanded: return QStringLiteral("τ cmd");
-    default: return QStringLiteral("τ ext");
+    case Signal::kTorqueExternal: return QStringLiteral("τ ext");
+    case Signal::kAxisActual: return QStringLiteral("q");
+    case Signal::kAxisSetPoint: return QStringLiteral("q set");
+    case Signal::kAxisVelocity: return QStringLiteral("dq");
+    case Signal::kGearTorque: return QStringLiteral("τ gear");
+    case Signal::kMotorCurrent: return QStringLiteral("I motor");
+    case Signal::kSensorForce: return QStringLiteral("F sensor");
+    case Signal::kSensorTorque: return QStringLiteral("T sensor");
+    default: return QStringLiteral("late");
+  }
+}
+
+QString styleWord(Qt::PenStyle style) {
+  return style == Qt::SolidLine ? QObject::tr("solid") : style == Qt::DashLine ? QObject::tr("dashed") : QObject::tr("dotted");
+}
+
+// What a signal's check box says when the pointer rests on it.
+QString signalToolTip(Signal signal) {
+  const QString drawn = styleWord(penStyle(signal));
+  switch (signal) {
+    case Signal::kTorqueExternal:
+      return QObject::tr("External joint torques (Nm): the external wrench at the TCP mapped with J(q)^T, drawn dotted");
+    case Signal::kAxisActual:
+      return QObject::tr("Actual axis positions (rad), as the robot measures them, drawn %1").arg(drawn);
+    case Signal::kAxisSetPoint:
+      return QObject::tr("Axis set-points (rad): where the robot controller is taking the axes, drawn %1").arg(drawn);
+    case Signal::kAxisVelocity:
+      return QObject::tr("Axis velocities (rad/s), from consecutive actual positions, drawn %1").arg(drawn);
+    case Signal::kGearTorque:
+      return QObject::tr("Gear torques (Nm) the robot reports for its axes, drawn %1").arg(drawn);
+    case Signal::kMotorCurrent:
+      return QObject::tr("Motor currents (A) of the axes, in their own chart, drawn %1").arg(drawn);
+    case Signal::kSensorForce:
+      return QObject::tr("Force the F/T sensor measures (N), in its own frame: Fx red, Fy green, Fz blue, drawn %1. "
+                         "Gaps: no recent reading from the sensor").arg(drawn);
+    case Signal::kSensorTorque:
+      return QObject::tr("Torque the F/T sensor measures (Nm), in its own frame: Tx red, Ty green, Tz blue, drawn %1")
+          .arg(drawn);
+    case Signal::kLateAnswers:
+      return QObject::tr("Late answers the robot has counted (its Delay): it grows when this PC answers a cycle too "
+                         "late, and RSI stops when it reaches the limit of the RSI context");
+    default:
+      return QObject::tr("%1 %2 (%3), drawn %4")
+          .arg(quantityTitle(quantityOf(signal)), signalLabel(signal), quantityUnit(quantityOf(signal)), drawn);
+  }
+}
+
+// What a chart says when the pointer rests on it.
+QString chartToolTip(Quantity quantity, const QString& joints_caption) {
+  switch (quantity) {
+    case Quantity::kForce:
+      return QObject::tr("Force sensor: force (N, solid) and torque (Nm, dashed) in the sensor's frame; x red, "
+                         "y green, z blue");
+    case Quantity::kDelay:
+      return QObject::tr("Late answers the robot has counted in this RSI session (its Delay)");
+    default:
+      return QObject::tr("%1 (%2) of the %3 ticked under %4; line style as under Signals")
+          .arg(quantityTitle(quantity), quantityUnit(quantity), joints_caption.toLower(), joints_caption);
   }
 }
 
@@ -126,43 +196,91 @@ void PlotsWidget::buildUi() {
                            .arg(kMaxWindowSeconds));
   controls->addWidget(status_, 1);
 
-  auto* splitter = new QSplitter(Qt::Vertical, this);
-  splitter->setChildrenCollapsible(false);
-  splitter->setHandleWidth(4);
-  for (int q = 0; q < kQuantityCount; ++q) {
-    auto canvas = std::make_unique<ChartCanvas>(splitter);
-    const auto quantity = static_cast<Quantity>(q);
-    // The three charts share the time axis: only the bottom one carries its labels and title.
-    const bool bottom = q == kQuantityCount - 1;
-    canvas->setXLabelsVisible(bottom);
-    canvas->setAxisTitles(bottom ? tr("Time [s], 0 = newest sample") : QString(), axisTitle(quantity));
-    canvas->widget()->setToolTip(tr("%1 (%2) of the joints ticked under Joints; line style as under Signals")
-                                     .arg(quantityTitle(quantity), quantityUnit(quantity)));
-    splitter->addWidget(canvas->widget());
+  splitter_ = new QSplitter(Qt::Vertical, this);
+  splitter_->setChildrenCollapsible(false);
+  splitter_->setHandleWidth(4);
+  for (int q = 0; q < kAllQuantityCount; ++q) {
+    auto canvas = std::make_unique<ChartCanvas>(splitter_);
+    splitter_->addWidget(canvas->widget());
     canvases_[static_cast<std::size_t>(q)] = std::move(canvas);
   }
-  // Space is shared in proportion to the minimum heights, so the bottom chart -- which also holds the
-  // time labels and title -- gets a plot area about as tall as the others.
-  QList<int> sizes;
-  for (const auto& canvas : canvases_) sizes << canvas->widget()->minimumHeight();
-  splitter->setSizes(sizes);
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(6, 4, 6, 4);
   layout->setSpacing(4);
   layout->addLayout(controls);
-  layout->addWidget(splitter, 1);
+  layout->addWidget(splitter_, 1);
+}
+
+// The charts of the setup's signals, the bottom one shown carrying the time axis; the splitter's
+// space is shared out again when charts came or went (or relayout).
+void PlotsWidget::updateCharts(bool relayout) {
+  int bottom = -1;
+  for (int q = 0; q < kAllQuantityCount; ++q)
+    if (isChartShown(static_cast<Quantity>(q))) bottom = q;
+  bool changed = false;
+  for (int q = 0; q < kAllQuantityCount; ++q) {
+    const auto quantity = static_cast<Quantity>(q);
+    auto* chart = static_cast<ChartCanvas*>(canvases_[static_cast<std::size_t>(q)].get());
+    // The charts share the time axis: only the bottom one carries its labels and title.
+    chart->setXLabelsVisible(q == bottom);
+    QString title = axisTitle(quantity);
+    if (quantity == Quantity::kForce && !isSignalVisible(Signal::kSensorTorque)) title = QStringLiteral("F [N]");
+    if (quantity == Quantity::kForce && !isSignalVisible(Signal::kSensorForce)) title = QStringLiteral("T [Nm]");
+    chart->setAxisTitles(q == bottom ? tr("Time [s], 0 = newest sample") : QString(), title);
+    chart->widget()->setToolTip(chartToolTip(quantity, setup_.joints_caption));
+    const bool shown = isChartShown(quantity);
+    if (chart->widget()->isVisibleTo(this) != shown) changed = true;
+    chart->widget()->setVisible(shown);
+  }
+  if (!changed && !relayout) return;
+  // Space is shared in proportion to the minimum heights, so the bottom chart -- which also holds the
+  // time labels and title -- gets a plot area about as tall as the others.
+  QList<int> sizes;
+  for (const auto& canvas : canvases_)
+    sizes << (canvas->widget()->isVisibleTo(this) ? canvas->widget()->minimumHeight() : 0);
+  splitter_->setSizes(sizes);
+}
+
+bool PlotsWidget::isChartShown(Quantity quantity) const {
+  bool offered = false, ticked = false;
+  for (Signal signal : setup_.offered) {
+    if (quantityOf(signal) != quantity) continue;
+    offered = true;
+    ticked = ticked || signal_on_[static_cast<std::size_t>(signal)];
+  }
+  return offered && (ticked || !quantityCollapses(quantity));
+}
+
+// Shows the choosers' boxes and the charts of the setup's signals and joints, named as the setup says.
+void PlotsWidget::applySetup() {
+  joints_caption_->setText(setup_.joints_caption);
+  for (int j = 0; j < kJointCount; ++j) {
+    QCheckBox* box = joint_boxes_[static_cast<std::size_t>(j)];
+    box->setText(setup_.joint_prefix + QString::number(j + 1));
+    box->setToolTip(tr("Show %1 in every chart (its lines are drawn in this colour)").arg(setup_.joint_title.arg(j + 1)));
+    box->setVisible(j < setup_.joints);
+    box->setEnabled(j < joint_count_);
+  }
+  for (int s = 0; s < kSignalCount; ++s) {
+    QCheckBox* box = signal_boxes_[static_cast<std::size_t>(s)];
+    QSignalBlocker block(box);
+    box->setChecked(signal_on_[static_cast<std::size_t>(s)]);
+    box->setVisible(offered_[static_cast<std::size_t>(s)]);
+  }
+  updateCharts(true);
+  applyVisibility();
 }
 
 QWidget* PlotsWidget::buildJointChooser() {
   auto* strip = new QWidget(this);
   QHBoxLayout* row = stripLayout(strip);
-  row->addWidget(caption(tr("Joints"), strip));
+  joints_caption_ = caption(tr("Joints"), strip);
+  row->addWidget(joints_caption_);
   for (int j = 0; j < kJointCount; ++j) {
     auto* check = new QCheckBox(QStringLiteral("J%1").arg(j + 1), strip);
     check->setStyleSheet(jointCheckStyle(jointColour(j)));
     check->setChecked(joint_on_[static_cast<std::size_t>(j)]);
-    check->setToolTip(tr("Show joint %1 in every chart (its lines are drawn in this colour)").arg(j + 1));
     connect(check, &QCheckBox::toggled, this, [this, j](bool on) { setJointVisible(j, on); });
     row->addWidget(check);
     joint_boxes_[static_cast<std::size_t>(j)] = check;
@@ -180,18 +298,11 @@ QWidget* PlotsWidget::buildSignalChooser() {
     check->setIcon(lineSample(penStyle(signal)));
     check->setIconSize(QSize(24, 12));
     check->setChecked(signal_on_[static_cast<std::size_t>(s)]);
-    check->setToolTip(tr("%1 %2 (%3), drawn %4")
-                          .arg(quantityTitle(quantityOf(signal)), signalLabel(signal),
-                               quantityUnit(quantityOf(signal)),
-                               penStyle(signal) == Qt::SolidLine  ? tr("solid")
-                               : penStyle(signal) == Qt::DashLine ? tr("dashed")
-                                                                  : tr("dotted")));
+    check->setToolTip(signalToolTip(signal));
     connect(check, &QCheckBox::toggled, this, [this, signal](bool on) { setSignalVisible(signal, on); });
     row->addWidget(check);
     signal_boxes_[static_cast<std::size_t>(s)] = check;
   }
-  signal_boxes_[static_cast<int>(Signal::kTorqueExternal)]->setToolTip(
-      tr("External joint torques (Nm): the external wrench at the TCP mapped with J(q)^T, drawn dotted"));
   return strip;
 }
 
@@ -233,14 +344,17 @@ void PlotsWidget::declareSeries() {
   for (int c = 0; c < kChannelCount; ++c) {
     const Signal signal = signalOfChannel(c);
     const int joint = jointOfChannel(c);
+    const bool per_joint = isJointSignal(signal);
     canvas(quantityOf(signal))
-        .addSeries(c, QStringLiteral("J%1 %2").arg(joint + 1).arg(signalLabel(signal)), jointColour(joint),
-                   penStyle(signal));
+        .addSeries(c,
+                   per_joint ? QStringLiteral("J%1 %2").arg(joint + 1).arg(signalLabel(signal))
+                             : QStringLiteral("%1 %2").arg(componentName(signal, joint), signalLabel(signal)),
+                   per_joint ? jointColour(joint) : componentColour(signal, joint), penStyle(signal));
   }
 }
 
 void PlotsWidget::setJointCount(int joints) {
-  joint_count_ = std::clamp(joints, 1, kJointCount);
+  joint_count_ = std::clamp(joints, 1, std::min(kJointCount, setup_.joints));
   for (int j = 0; j < kJointCount; ++j) joint_boxes_[static_cast<std::size_t>(j)]->setEnabled(j < joint_count_);
   applyVisibility();
   redrawNow();
@@ -260,6 +374,7 @@ void PlotsWidget::setSignalVisible(Signal signal, bool visible) {
   signal_on_[s] = visible;
   QSignalBlocker block(signal_boxes_[s]);
   signal_boxes_[s]->setChecked(visible);
+  updateCharts();
   applyVisibility();
   redrawNow();
 }
