@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The 3D view without a display: the factory's placeholder (no hang under the offscreen platform),
-// link meshes of every model through assimp, link poses against the core's FK, tints, camera maths,
-// recognising software OpenGL renderers.
+// link meshes of every model (xMate and KUKA) through assimp, link poses against the core's FK, tints,
+// camera maths, recognising software OpenGL renderers, a KUKA's RSI correction envelope.
 #include <QLabel>
 #include <QSignalSpy>
 #include <QtTest>
@@ -14,7 +14,9 @@
 #include "model/kinematics.h"
 #include "model/urdf_loader.h"
 #include "session/session.h"
+#include "sim/krc.h"
 #include "view3d/arm_poser.h"
+#include "view3d/correction_envelope.h"
 #include "view3d/gl_probe.h"
 #include "view3d/link_tints.h"
 #include "view3d/mesh_data.h"
@@ -60,6 +62,10 @@ class TestView3dOffscreen : public QObject {
   void springForceIsClamped();
   void cameraRayHitsProjectedPoint();
   void softwareRenderersAreRecognised();
+  void kukaModelsLoadAndPose();
+  void placeholderKeepsAKukaModel();
+  void correctionEnvelopeSpansTheLimits();
+  void sceneShowsCorrectionEnvelope();
 };
 
 void TestView3dOffscreen::factoryReturnsPlaceholder() {
@@ -273,6 +279,162 @@ void TestView3dOffscreen::softwareRenderersAreRecognised() {
   QVERIFY(!isSoftwareRenderer(QStringLiteral("Mesa Intel(R) UHD Graphics 620 (KBL GT2)")));
   QVERIFY(!isSoftwareRenderer(QStringLiteral("NVIDIA GeForce RTX 3060/PCIe/SSE2")));
   QVERIFY(!isSoftwareRenderer(QString()));
+}
+
+namespace {
+
+std::vector<const model::RobotSpec*> kukaSpecs() {
+  std::vector<const model::RobotSpec*> specs;
+  for (const model::RobotSpec& spec : model::allRobotSpecs())
+    if (spec.family == model::RobotFamily::kKuka) specs.push_back(&spec);
+  return specs;
+}
+
+bool contains(const CorrectionEnvelope& e, const QVector3D& p, float tolerance = 1e-5f) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (p[axis] < e.min[axis] - tolerance || p[axis] > e.max[axis] + tolerance) return false;
+  return true;
+}
+
+}  // namespace
+
+// Both KUKA models: base + 6 links with meshes, posed by the core's forward kinematics; the arm
+// starts where the KUKA simulator starts.
+void TestView3dOffscreen::kukaModelsLoadAndPose() {
+  const std::vector<const model::RobotSpec*> specs = kukaSpecs();
+  QCOMPARE(int(specs.size()), 2);
+  Qt3DCore::QEntity root;
+  RobotScene scene(&root);
+  std::mt19937 rng(11);
+  for (const model::RobotSpec* spec : specs) {
+    const QString name = QString::fromLatin1(spec->name.data(), qsizetype(spec->name.size()));
+    const ArmPoser poser(*spec);
+    QCOMPARE(poser.spec().name, spec->name);
+    QCOMPARE(poser.dof(), 6);
+    QCOMPARE(int(poser.links().size()), 7);
+    for (const LinkVisual& link : poser.links()) {
+      QVERIFY2(!link.mesh.isEmpty(), qPrintable(name + '/' + link.name));
+      QVERIFY2(loadMeshData(link.mesh, link.scale).triangleCount() > 100, qPrintable(name + '/' + link.name));
+    }
+    scene.setModel(*spec);
+    QCOMPARE(scene.linkCount(), 7);
+    QCOMPARE(scene.poser()->spec().name, spec->name);
+    // Home: the KUKA simulator's start pose (A1..A6 = 0, -90, 90, 0, 90, 0 deg).
+    const std::array<double, 6> start_deg = xmate::sim::KrcConfig{}.start_deg;
+    for (int i = 0; i < 6; ++i)
+      QVERIFY(std::abs(scene.jointPositions()[size_t(i)] - start_deg[size_t(i)] * M_PI / 180) < 1e-9);
+    QCOMPARE(scene.jointPositions()[6], 0.0);
+    const model::ArmModel arm = model::makeArmModel(model::loadRobotChain(*spec), *spec);
+    for (int trial = 0; trial < 10; ++trial) {
+      const std::array<double, 7> q = randomPose(*spec, rng);
+      scene.setJointPositions(q);
+      model::JointVector jq = model::JointVector::Zero();
+      for (int i = 0; i < 6; ++i) jq[i] = q[size_t(i)];
+      model::LinkFrames frames;
+      model::forwardKinematics(arm, jq, frames);
+      for (int i = 0; i < 6; ++i)
+        QVERIFY2(maxDifference(scene.linkTransform(i + 1), toMatrix(frames.links[size_t(i)])) < 1e-5,
+                 qPrintable(name + QStringLiteral(" link %1").arg(i + 1)));
+      QVERIFY((scene.tcpPosition() - toMatrix(model::flangePose(arm, jq)).column(3).toVector3D()).length() < 1e-5f);
+    }
+  }
+  // Back to an xMate: 8 links again.
+  scene.setModel(xmate::XMATE7_PRO);
+  QCOMPARE(scene.linkCount(), 8);
+}
+
+void TestView3dOffscreen::placeholderKeepsAKukaModel() {
+  RobotView view;
+  QVERIFY(!view.is3D());
+  const model::RobotSpec* kr16 = model::findRobotSpec("kr16_2");
+  QVERIFY(kr16);
+  view.setModel(*kr16);
+  QCOMPARE(view.spec().name, kr16->name);
+  view.setCorrectionEnvelope(true, QVector3D(0, 0, 0), QVector3D(0.1f, 0.1f, 0.1f));  // ignored, no crash
+  view.setPullEnabled(false, QStringLiteral("why"));
+  QVERIFY(!view.beginPull(QPointF(10, 10)));
+}
+
+// The envelope holds the flange at the start pose and at every corner of the correction limits;
+// it grows with the limits and shrinks to the start position without any.
+void TestView3dOffscreen::correctionEnvelopeSpansTheLimits() {
+  const ArmPoser poser(*model::findRobotSpec("kr6_r900_sixx"));
+  const std::array<double, 7> home = ArmPoser::homePose(poser.spec());
+  std::array<double, 6> q_on{};
+  for (size_t i = 0; i < 6; ++i) q_on[i] = home[i];
+  const double d5 = 5 * M_PI / 180;
+  std::array<double, 6> lower, upper;
+  lower.fill(-d5);
+  upper.fill(d5);
+  const CorrectionEnvelope e = correctionEnvelope(poser, q_on, lower, upper);
+  QVERIFY(e.valid);
+  std::array<double, 7> start{};
+  std::copy(q_on.begin(), q_on.end(), start.begin());
+  const QVector3D flange = poser.flangePose(start).column(3).toVector3D();
+  QVERIFY((e.start - flange).length() < 1e-5f);
+  QVERIFY(contains(e, flange));
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> side(0, 1);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::array<double, 7> q = start;
+    for (size_t i = 0; i < 6; ++i) q[i] += side(rng) ? upper[i] : lower[i];
+    QVERIFY(contains(e, poser.flangePose(q).column(3).toVector3D(), 1e-4f));
+  }
+  const QVector3D size = e.max - e.min;
+  for (int axis = 0; axis < 3; ++axis) {
+    // +-5 deg on every axis of a 0.9 m arm: centimetres, not metres.
+    QVERIFY2(size[axis] > 0.01f && size[axis] < 0.5f, qPrintable(QString::number(double(size[axis]))));
+  }
+  // Only A1 may move (+-5 deg about the vertical axis): no height change.
+  std::array<double, 6> none{};
+  std::array<double, 6> a1_lower = none, a1_upper = none;
+  a1_lower[0] = -d5;
+  a1_upper[0] = d5;
+  const CorrectionEnvelope a1 = correctionEnvelope(poser, q_on, a1_lower, a1_upper);
+  QVERIFY(a1.max.z() - a1.min.z() < 1e-5f);
+  QVERIFY(a1.max.y() - a1.min.y() > 0.01f);
+  // Wider limits, larger box; no limits, a point.
+  lower.fill(-2 * d5);
+  upper.fill(2 * d5);
+  const CorrectionEnvelope wide = correctionEnvelope(poser, q_on, lower, upper);
+  QVERIFY(contains(wide, e.min) && contains(wide, e.max));
+  QVERIFY((wide.max - wide.min).length() > (e.max - e.min).length());
+  // The sample context's +-90 deg: random corrections stay within the box, give or take the
+  // sampling's centimetres.
+  lower.fill(-M_PI / 2);
+  upper.fill(M_PI / 2);
+  const CorrectionEnvelope big = correctionEnvelope(poser, q_on, lower, upper);
+  double worst = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::array<double, 7> q = start;
+    for (int i = 0; i < 6; ++i) {
+      std::uniform_real_distribution<double> d(std::max(q_on[size_t(i)] + lower[size_t(i)], poser.lower(i)),
+                                               std::min(q_on[size_t(i)] + upper[size_t(i)], poser.upper(i)));
+      q[size_t(i)] = d(rng);
+    }
+    const QVector3D p = poser.flangePose(q).column(3).toVector3D();
+    for (int axis = 0; axis < 3; ++axis)
+      worst = std::max({worst, double(big.min[axis] - p[axis]), double(p[axis] - big.max[axis])});
+  }
+  QVERIFY2(worst < 0.03, qPrintable(QString::number(worst)));
+  const CorrectionEnvelope still = correctionEnvelope(poser, q_on, none, none);
+  QVERIFY((still.max - still.min).length() < 1e-6f);
+  QVERIFY((still.min - flange).length() < 1e-5f);
+}
+
+void TestView3dOffscreen::sceneShowsCorrectionEnvelope() {
+  Qt3DCore::QEntity root;
+  RobotScene scene(&root);
+  scene.setModel(*model::findRobotSpec("kr6_r900_sixx"));
+  QVERIFY(!scene.correctionEnvelopeVisible());
+  scene.setCorrectionEnvelope(true, QVector3D(0.4f, -0.1f, 0.5f), QVector3D(0.5f, 0.1f, 0.6f));
+  QVERIFY(scene.correctionEnvelopeVisible());
+  QCOMPARE(scene.correctionEnvelopeMin(), QVector3D(0.4f, -0.1f, 0.5f));
+  QCOMPARE(scene.correctionEnvelopeMax(), QVector3D(0.5f, 0.1f, 0.6f));
+  scene.setModel(*model::findRobotSpec("kr16_2"));  // a model change keeps the overlays
+  QVERIFY(scene.correctionEnvelopeVisible());
+  scene.setCorrectionEnvelope(false);
+  QVERIFY(!scene.correctionEnvelopeVisible());
 }
 
 QTEST_MAIN(TestView3dOffscreen)

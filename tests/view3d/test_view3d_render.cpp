@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The 3D view drawing for real (xvfb-run + Mesa): the robot is visible and upright in a capture, a
-// different pose changes the picture, every model renders, pointer events orbit/pan/zoom/pull, a
-// Session with the simulator drives it, and software OpenGL gets a live-update budget.
+// different pose changes the picture, every model (xMate and KUKA) renders, pointer events
+// orbit/pan/zoom/pull, a Session with the xMate or the KUKA simulator drives it (the KUKA: pose from
+// the arm state, RSI correction envelope, Shift+drag pushes the simulated KRC's flange), and
+// software OpenGL gets a live-update budget.
 // Set RCI_VIEW3D_PNG_DIR to keep the captures as PNG files.
 #include <QElapsedTimer>
 #include <QLabel>
@@ -9,10 +11,14 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <cmath>
 #include <functional>
 
 #include "model/robot_spec.h"
+#include "../gui/gui_test_support.h"
 #include "session/session.h"
+#include "sim/krc_server.h"
+#include "view3d/arm_poser.h"
 #include "view3d/robot_scene.h"
 #include "view3d/robot_view.h"
 #include "window/parts.h"
@@ -64,6 +70,19 @@ double changedShare(const QImage& a, const QImage& b) {
   return double(count) / (a.width() * a.height());
 }
 
+// Share of pixels in the orange of a KUKA housing, lit or shaded (the grid is grey, the axes red or
+// green, the spring yellow).
+double housingShare(const QImage& image) {
+  if (image.isNull()) return 0;
+  int count = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QRgb p = image.pixel(x, y);
+      count += qRed(p) > 60 && qRed(p) > 1.5 * qGreen(p) && qGreen(p) > 1.5 * qBlue(p);
+    }
+  return double(count) / (image.width() * image.height());
+}
+
 void keep(const QImage& image, const QString& name) {
   const QString dir = qEnvironmentVariable("RCI_VIEW3D_PNG_DIR");
   if (!dir.isEmpty()) image.save(dir + '/' + name + ".png");
@@ -96,6 +115,8 @@ class TestView3dRender : public QObject {
   void factoryViewCaptures();
   void followsTheSimulator();
   void softwareGlHasALiveUpdateBudget();
+  void rendersKukaModels();
+  void followsTheKukaSimulator();
 };
 
 void TestView3dRender::rendersTheRobot() {
@@ -333,6 +354,114 @@ void TestView3dRender::softwareGlHasALiveUpdateBudget() {
   QVERIFY(note);
   QVERIFY2(note->text().contains(QStringLiteral("Software OpenGL")), qPrintable(note->text()));
   QVERIFY2(note->toolTip().contains(QStringLiteral("OpenGL runs on the CPU here")), qPrintable(note->toolTip()));
+}
+
+void TestView3dRender::rendersKukaModels() {
+  RobotView view;
+  QVERIFY(view.is3D());
+  view.resize(640, 480);
+  view.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&view));
+  for (const char* name : {"kr16_2", "kr6_r900_sixx"}) {
+    const xmate::model::RobotSpec* spec = xmate::model::findRobotSpec(name);
+    QVERIFY(spec);
+    view.setModel(*spec);
+    QCOMPARE(view.spec().name, spec->name);
+    QCOMPARE(view.scene()->linkCount(), 7);
+    QVERIFY2(!view.findChild<QLabel*>(QStringLiteral("robotViewHint"))->text().startsWith(QLatin1String("Cannot")),
+             name);
+    view.resetView();
+    // The first frames after a model change may still show the grid alone: capture again until the
+    // arm is in (a bounded number of times; a model that never draws fails).
+    QImage image;
+    for (int attempt = 0; attempt < 20 && housingShare(image) < 0.01; ++attempt)
+      image = captureNow([&](auto done) { view.capture(done); });
+    keep(image, QStringLiteral("view3d_%1").arg(QLatin1String(name)));
+    QVERIFY2(housingShare(image) > 0.01, qPrintable(QStringLiteral("%1: %2 of the pixels are the housing's orange")
+                                                        .arg(QLatin1String(name))
+                                                        .arg(housingShare(image))));
+  }
+}
+
+namespace {
+
+double norm3(const std::array<double, 6>& w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); }
+
+}  // namespace
+
+// A Session with the built-in KUKA simulator: the view loads the KR 6 R900 sixx, poses it and its
+// TCP frame from the arm state, draws the RSI correction envelope around the start pose, and a
+// Shift+drag from the flange pushes the simulated KRC (its F/T sensor reads the push); released,
+// the push is gone.
+void TestView3dRender::followsTheKukaSimulator() {
+  Session session;
+  std::unique_ptr<QWidget> widget(createRobotView(session, nullptr));
+  auto* view = qobject_cast<RobotView*>(widget.get());
+  QVERIFY(view && view->is3D());
+  widget->resize(800, 600);
+  widget->show();
+  QVERIFY(QTest::qWaitForWindowExposed(widget.get()));
+  QSignalSpy opened(&session, &Session::opened);
+  session.open(test::kukaSimulator());
+  QTRY_VERIFY_WITH_TIMEOUT(opened.count() == 1, 30000);
+  QVERIFY(session.kukaSimulator());
+  QTRY_VERIFY_WITH_TIMEOUT(session.live().has_arm_state, 10000);
+  QCOMPARE(view->spec().name, std::string_view("kr6_r900_sixx"));
+  QCOMPARE(view->scene()->linkCount(), 7);
+
+  // Posed from the arm state: moved elsewhere, the next live update puts it back.
+  view->setJointPositions({0.3, -1.2, 1.0, 0.2, 0.4, 0.1, 0});
+  view->setTcpPose({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+  QTRY_COMPARE_WITH_TIMEOUT(view->scene()->jointPositions(), session.live().arm.sample.q, 5000);
+  const std::array<double, 16>& tcp = session.live().arm.tcp;
+  const QVector3D measured{float(tcp[3]), float(tcp[7]), float(tcp[11])};
+  QTRY_VERIFY_WITH_TIMEOUT((view->scene()->tcpPosition() - measured).length() < 1e-5f, 5000);
+  // The KRC's flange pose and the drawn arm agree (within a millimetre).
+  const QVector3D flange = view->scene()->poser()->flangePose(session.live().arm.sample.q).column(3).toVector3D();
+  QVERIFY2((flange - measured).length() < 1e-3f, qPrintable(QString::number(double((flange - measured).length()))));
+
+  // The correction envelope holds the flange at the RSI start pose.
+  QTRY_VERIFY_WITH_TIMEOUT(view->scene()->correctionEnvelopeVisible(), 5000);
+  const QVector3D lo = view->scene()->correctionEnvelopeMin(), hi = view->scene()->correctionEnvelopeMax();
+  for (int axis = 0; axis < 3; ++axis) {
+    QVERIFY(measured[axis] > lo[axis] - 1e-3f && measured[axis] < hi[axis] + 1e-3f);
+    QVERIFY(hi[axis] - lo[axis] > 0.005f);
+  }
+  QVERIFY(!view->scene()->safetyBoxVisible());  // an xMate's setting
+  // The Program panel's waypoints and planned path, as on an xMate.
+  ProgramOverlay overlay;
+  overlay.waypoints = {{0.5, 0, 0.6}, {0.5, 0.2, 0.6}};
+  overlay.labels = {QStringLiteral("P1"), QStringLiteral("P2")};
+  overlay.path = {{0.5, 0, 0.6}, {0.5, 0.1, 0.62}, {0.5, 0.2, 0.6}};
+  session.setProgramOverlay(overlay);
+  QCOMPARE(view->scene()->waypointCount(), 2);
+  QCOMPARE(view->scene()->plannedPathPointCount(), 3);
+  if (!qEnvironmentVariableIsEmpty("RCI_VIEW3D_PNG_DIR"))
+    keep(captureNow([&](auto done) { captureRobotView(widget.get(), done); }), QStringLiteral("view3d_kuka_sim"));
+
+  // Shift+drag from the flange: a spring force at the flange of the simulated KRC.
+  QTRY_VERIFY_WITH_TIMEOUT(view->pullEnabled(), 5000);
+  QWindow* window = window3d();
+  QVERIFY(window);
+  QPointF pixel;
+  QVERIFY(view->camera().project(view->scene()->tcpPosition(), QSizeF(window->size()), pixel));
+  xmate::sim::Krc& krc = session.kukaSimulator()->krc();
+  QCOMPARE(norm3(krc.flangeWrench()), 0.0);
+  sendMouse(window, QEvent::MouseButtonPress, pixel, Qt::LeftButton, Qt::ShiftModifier);
+  QVERIFY(view->pulling());
+  sendMouse(window, QEvent::MouseMove, pixel + QPointF(0, -40), Qt::LeftButton, Qt::ShiftModifier);
+  QVERIFY(view->scene()->springVisible());
+  const double pushed = norm3(krc.flangeWrench());
+  QVERIFY2(pushed > 1.0 && pushed <= RobotView::kPullMaxForce + 1e-3, qPrintable(QString::number(pushed)));
+  QTRY_VERIFY_WITH_TIMEOUT(session.live().force_reading && norm3(session.live().force) > 1.0, 5000);
+  sendMouse(window, QEvent::MouseButtonRelease, pixel + QPointF(0, -40), Qt::LeftButton);
+  QVERIFY(!view->pulling());
+  QCOMPARE(krc.flangeWrench(), (std::array<double, 6>{}));
+  QTRY_VERIFY_WITH_TIMEOUT(norm3(session.live().force) < 0.1, 5000);
+
+  session.close();
+  QVERIFY(!view->pullEnabled());
+  QVERIFY(!view->scene()->correctionEnvelopeVisible());
 }
 
 QTEST_MAIN(TestView3dRender)

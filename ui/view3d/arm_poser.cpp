@@ -11,6 +11,7 @@
 #include "model/resource_locator.h"
 #include "model/urdf_loader.h"
 #include "sim/controller.h"
+#include "sim/krc.h"
 
 namespace rci::ui {
 namespace model = xmate::model;
@@ -54,8 +55,9 @@ LinkVisual makeVisual(const model::ChainLink& link, const urdf::ModelInterfaceSh
 
 }  // namespace
 
-ArmPoser::ArmPoser(xmate::XmateType type) : type_(type) {
-  const model::RobotSpec& spec = model::robotSpec(type);
+ArmPoser::ArmPoser(xmate::XmateType type) : ArmPoser(model::robotSpec(type)) {}
+
+ArmPoser::ArmPoser(const model::RobotSpec& spec) : spec_(&spec) {
   const model::Chain chain = model::loadRobotChain(spec);
   arm_ = model::makeArmModel(chain, spec);
   const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDFFile(model::robotDescriptionPath(spec).string());
@@ -81,6 +83,18 @@ QMatrix4x4 ArmPoser::flangePose(const std::array<double, 7>& q) const {
   return toMatrix(model::flangePose(arm_, jq));
 }
 
-std::array<double, 7> ArmPoser::homePose() { return xmate::sim::SimConfig{}.initial_q; }
+Eigen::Vector3d ArmPoser::flangePosition(const std::array<double, 7>& q) const {
+  model::JointVector jq = model::JointVector::Zero();
+  for (int i = 0; i < arm_.dof; ++i) jq[i] = q[static_cast<size_t>(i)];
+  return model::flangePose(arm_, jq).translation();
+}
+
+std::array<double, 7> ArmPoser::homePose(const model::RobotSpec& spec) {
+  if (spec.family == model::RobotFamily::kXmate) return xmate::sim::SimConfig{}.initial_q;
+  std::array<double, 7> q{};
+  const std::array<double, 6> start_deg = xmate::sim::KrcConfig{}.start_deg;
+  for (size_t i = 0; i < start_deg.size(); ++i) q[i] = start_deg[i] * M_PI / 180.0;
+  return q;
+}
 
 }  // namespace rci::ui

@@ -14,6 +14,7 @@
 #include <xmate/types.h>
 
 #include "model/arm_model.h"
+#include "model/robot_spec.h"
 
 namespace rci::ui {
 
@@ -32,27 +33,32 @@ QMatrix4x4 toMatrix(const std::array<double, 16>& row_major);
 
 class ArmPoser {
  public:
-  // Loads the model's URDF (resources/robots/<model>.urdf). Throws std::runtime_error saying what
-  // is missing and what to do.
+  // Loads the model's URDF (resources/robots/<spec.name>.urdf), for a model of either family.
+  // Throws std::runtime_error saying what is missing and what to do. GUI thread (reads files).
+  explicit ArmPoser(const xmate::model::RobotSpec& spec);
+  // The same for an xMate model.
   explicit ArmPoser(xmate::XmateType type);
 
-  xmate::XmateType type() const { return type_; }
+  const xmate::model::RobotSpec& spec() const { return *spec_; }
   int dof() const { return arm_.dof; }
   // The base first, then link 1..dof.
   const std::vector<LinkVisual>& links() const { return links_; }
-  // Pose of every link frame in the base frame (same order as links()).
+  // Pose of every link frame in the base frame (same order as links()). Any thread (const).
   std::vector<QMatrix4x4> linkPoses(const std::array<double, 7>& q) const;
   QMatrix4x4 flangePose(const std::array<double, 7>& q) const;
+  // The flange position only, in double precision (for sampling many poses). Any thread (const).
+  Eigen::Vector3d flangePosition(const std::array<double, 7>& q) const;
   // Hardware joint limits, rad.
   double lower(int joint) const { return arm_.hardware_lower[joint]; }
   double upper(int joint) const { return arm_.hardware_upper[joint]; }
   // Sum of the DH lengths: the arm's reach, m (for framing the camera).
   double reach() const { return reach_; }
-  // A comfortable pose to show before any state arrives (the simulator's power-up pose).
-  static std::array<double, 7> homePose();
+  // A comfortable pose to show before any state arrives: where the family's built-in simulator
+  // starts (an xMate's power-up pose, a KUKA's A1..A6 = 0, -90, 90, 0, 90, 0 deg). Any thread.
+  static std::array<double, 7> homePose(const xmate::model::RobotSpec& spec);
 
  private:
-  xmate::XmateType type_;
+  const xmate::model::RobotSpec* spec_;
   xmate::model::ArmModel arm_;
   std::vector<LinkVisual> links_;
   double reach_ = 1.0;

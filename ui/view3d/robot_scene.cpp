@@ -6,6 +6,7 @@
 #include <Qt3DExtras/QCylinderMesh>
 #include <Qt3DRender/QDirectionalLight>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rci::ui {
@@ -14,6 +15,8 @@ namespace {
 const QColor kGridMinor(0x44, 0x4b, 0x54);
 const QColor kGridMajor(0x5a, 0x63, 0x6e);
 const QColor kBoxColor(0x4f, 0xb3, 0xff);
+const QColor kEnvelopeColor(0xb3, 0x9d, 0xdb);
+const QColor kEnvelopeEdgeColor(0x7a, 0x6f, 0x9c);  // dimmer than the safety box: a background fact
 const QColor kWaypointColor(0xff, 0x9f, 0x1c);
 const QColor kPathColor(0x4d, 0xd0, 0xe1);
 const QColor kSpringColor(0xff, 0xd5, 0x4f);
@@ -83,6 +86,7 @@ RobotScene::RobotScene(Qt3DCore::QEntity* root) : root_(root) {
   buildGround(1.0);
   buildTcpFrame();
   buildSafetyBox();
+  buildCorrectionEnvelope();
   waypoint_mesh_ = new Qt3DExtras::QSphereMesh(root_);
   waypoint_mesh_->setRadius(0.015f);
   waypoint_mesh_->setRings(12);
@@ -147,14 +151,31 @@ void RobotScene::buildSafetyBox() {
   box_->setEnabled(false);
 }
 
+void RobotScene::buildCorrectionEnvelope() {
+  envelope_ = makeEntity(root_, &envelope_transform_);
+  envelope_->setObjectName(QStringLiteral("correctionEnvelope"));
+  envelope_mesh_ = new Qt3DExtras::QCuboidMesh(envelope_);
+  auto* material = new Qt3DExtras::QPhongAlphaMaterial(envelope_);
+  material->setAmbient(kEnvelopeColor.darker(150));
+  material->setDiffuse(kEnvelopeColor);
+  material->setSpecular(QColor(0, 0, 0));
+  material->setAlpha(0.07f);
+  envelope_->addComponent(envelope_mesh_);
+  envelope_->addComponent(material);
+  envelope_edges_ = std::make_unique<LineSet>(envelope_, LineSet::Kind::kSegments);
+  envelope_->setEnabled(false);
+}
+
 void RobotScene::clearArm() {
   delete arm_;  // deletes every link entity below it
   arm_ = nullptr;
   links_.clear();
 }
 
-void RobotScene::setModel(xmate::XmateType type) {
-  auto poser = std::make_unique<ArmPoser>(type);
+void RobotScene::setModel(xmate::XmateType type) { setModel(xmate::model::robotSpec(type)); }
+
+void RobotScene::setModel(const xmate::model::RobotSpec& spec) {
+  auto poser = std::make_unique<ArmPoser>(spec);
   std::vector<std::shared_ptr<const MeshData>> meshes;
   for (const LinkVisual& link : poser->links())
     meshes.push_back(link.mesh.isEmpty() ? nullptr : meshes_.get(link.mesh, link.scale));
@@ -179,7 +200,7 @@ void RobotScene::setModel(xmate::XmateType type) {
   }
   buildGround(poser_->reach());
   tcp_set_ = false;
-  q_ = ArmPoser::homePose();
+  q_ = ArmPoser::homePose(spec);
   updateLinks();
 }
 
@@ -214,6 +235,23 @@ void RobotScene::setSafetyBox(bool enabled, const QVector3D& size, const QMatrix
 }
 
 bool RobotScene::safetyBoxVisible() const { return box_->isEnabled(); }
+
+void RobotScene::setCorrectionEnvelope(bool visible, const QVector3D& min, const QVector3D& max) {
+  envelope_->setEnabled(visible);
+  if (!visible) return;
+  envelope_min_ = min;
+  envelope_max_ = max;
+  // At least 2 mm along each axis, so that a limit of 0 on every axis still shows a speck.
+  const QVector3D size(std::max(max.x() - min.x(), 0.002f), std::max(max.y() - min.y(), 0.002f),
+                       std::max(max.z() - min.z(), 0.002f));
+  envelope_transform_->setTranslation((min + max) / 2);
+  envelope_mesh_->setXExtent(size.x());
+  envelope_mesh_->setYExtent(size.y());
+  envelope_mesh_->setZExtent(size.z());
+  envelope_edges_->setLines(boxEdges(size), kEnvelopeEdgeColor);
+}
+
+bool RobotScene::correctionEnvelopeVisible() const { return envelope_->isEnabled(); }
 
 void RobotScene::setWaypoints(const std::vector<QVector3D>& positions) {
   for (Qt3DCore::QEntity* e : waypoints_) delete e;

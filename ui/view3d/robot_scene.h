@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The 3D scene of the robot view, independent of any window: ground grid, lights, the arm (one
-// entity + transform per link), TCP frame, safety box, waypoints, planned path and the mouse-pull
-// spring. RobotView puts it in a Qt3D window; tests build it bare to check poses.
+// entity + transform per link), TCP frame, safety box, RSI correction envelope, waypoints, planned
+// path and the mouse-pull spring. RobotView puts it in a Qt3D window; tests build it bare to check
+// poses. GUI thread only.
 #pragma once
 
 #include <QColor>
@@ -35,9 +36,10 @@ class RobotScene {
   explicit RobotScene(Qt3DCore::QEntity* root);
   ~RobotScene();
 
-  // Loads the model's URDF and meshes and rebuilds the arm at its home pose. Throws
+  // Loads the model's URDF and meshes (either family) and rebuilds the arm at its home pose. Throws
   // std::runtime_error (URDF or mesh missing) -- the previous arm stays.
-  void setModel(xmate::XmateType type);
+  void setModel(const xmate::model::RobotSpec& spec);
+  void setModel(xmate::XmateType type);  // an xMate model
   const ArmPoser* poser() const { return poser_.get(); }
 
   void setJointPositions(const std::array<double, 7>& q);
@@ -48,6 +50,11 @@ class RobotScene {
   // Cartesian safety box: size (m) along the axes of frame (its centre, base frame).
   void setSafetyBox(bool enabled, const QVector3D& size, const QMatrix4x4& frame);
   bool safetyBoxVisible() const;
+  // The region the RSI corrections may move the flange to (a faint box, base frame, m).
+  void setCorrectionEnvelope(bool visible, const QVector3D& min = {}, const QVector3D& max = {});
+  bool correctionEnvelopeVisible() const;
+  QVector3D correctionEnvelopeMin() const { return envelope_min_; }
+  QVector3D correctionEnvelopeMax() const { return envelope_max_; }
   bool springVisible() const { return spring_handle_->isEnabled(); }
   void setWaypoints(const std::vector<QVector3D>& positions);
   int waypointCount() const { return int(waypoints_.size()); }
@@ -78,6 +85,7 @@ class RobotScene {
   void buildLights();
   void buildTcpFrame();
   void buildSafetyBox();
+  void buildCorrectionEnvelope();
   void clearArm();
   void updateLinks();
 
@@ -96,6 +104,11 @@ class RobotScene {
   Qt3DCore::QTransform* box_transform_ = nullptr;
   Qt3DExtras::QCuboidMesh* box_mesh_ = nullptr;
   std::unique_ptr<LineSet> box_edges_;
+  Qt3DCore::QEntity* envelope_ = nullptr;
+  Qt3DCore::QTransform* envelope_transform_ = nullptr;
+  Qt3DExtras::QCuboidMesh* envelope_mesh_ = nullptr;
+  std::unique_ptr<LineSet> envelope_edges_;
+  QVector3D envelope_min_, envelope_max_;
   Qt3DExtras::QSphereMesh* waypoint_mesh_ = nullptr;
   Qt3DExtras::QPhongMaterial* waypoint_material_ = nullptr;
   std::vector<Qt3DCore::QEntity*> waypoints_;

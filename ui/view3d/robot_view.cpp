@@ -19,6 +19,7 @@
 #include <Qt3DRender/QRenderCapture>
 #include <Qt3DRender/QRenderSettings>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "gl_probe.h"
@@ -29,6 +30,7 @@ namespace {
 
 constexpr int kCaptureTimeoutMs = 15000;
 constexpr int kCaptureRetries = 8;
+constexpr double kReframeShare = 0.3;  // a new model whose reach differs by more than this frames anew
 const QColor kBackground(0x2f, 0x34, 0x3b);
 
 }  // namespace
@@ -37,7 +39,7 @@ QString RobotView::defaultHint() {
   return tr("Drag: orbit  ·  Right-drag: pan  ·  Wheel: zoom  ·  Shift+drag TCP: pull");
 }
 
-RobotView::RobotView(QWidget* parent) : QWidget(parent) {
+RobotView::RobotView(QWidget* parent) : QWidget(parent), spec_(&xmate::model::robotSpec(xmate::XMATE7_PRO)) {
   setMinimumSize(240, 200);
   const GlProbe probe = probeOpenGl();
   software_ = probe.software;
@@ -92,8 +94,9 @@ void RobotView::build3D() {
   hint_->setForegroundRole(QPalette::PlaceholderText);
   hint_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);  // may be cut, never widens the view
   hint_->setToolTip(tr("Left drag: orbit. Right or middle drag: pan. Wheel: zoom. Double-click: reset view.\n"
-                       "Shift + left drag starting on the TCP: pull the robot with a spring (built-in simulator in "
-                       "drag mode, at most %1 N).").arg(double(kPullMaxForce), 0, 'f', 0));
+                       "Shift + left drag starting on the TCP: pull the robot with a spring (built-in xMate "
+                       "simulator in drag mode, or the built-in KUKA simulator; at most %1 N).")
+                        .arg(double(kPullMaxForce), 0, 'f', 0));
   auto* reset = new QToolButton(bar);
   reset->setText(tr("Reset view"));
   reset->setToolTip(tr("Frame the whole arm from the default viewpoint (or double-click the view)"));
@@ -115,24 +118,30 @@ void RobotView::build3D() {
   container_->setFocusPolicy(Qt::StrongFocus);
   container_->setToolTip(hint_->toolTip());
   layout->addWidget(container_, 1);
-  setModel(type_);
+  setModel(*spec_);
   resetView();
 }
 
-void RobotView::setModel(xmate::XmateType type) {
+void RobotView::setModel(xmate::XmateType type) { setModel(xmate::model::robotSpec(type)); }
+
+void RobotView::setModel(const xmate::model::RobotSpec& spec) {
   if (!scene_) {
-    type_ = type;
+    spec_ = &spec;
     return;
   }
-  if (scene_->poser() && scene_->poser()->type() == type) return;  // already drawn
-  if (failed_model_ && *failed_model_ == type) return;           // said so already; do not retry each tick
+  if (scene_->poser() && scene_->poser()->spec().name == spec.name) return;  // already drawn
+  if (failed_model_ && failed_model_->name == spec.name) return;  // said so already; do not retry each tick
   try {
-    scene_->setModel(type);
-    type_ = type;
-    failed_model_.reset();
+    const double framed_reach = scene_->poser() ? scene_->poser()->reach() : 0;
+    scene_->setModel(spec);
+    spec_ = &spec;
+    failed_model_ = nullptr;
     showHint(defaultHint());
+    // A much larger or smaller arm (an xMate after a KR 16) would not fit or be lost in the old framing.
+    const double reach = scene_->poser()->reach();
+    if (framed_reach > 0 && std::abs(reach - framed_reach) > kReframeShare * framed_reach) resetView();
   } catch (const std::exception& e) {
-    failed_model_ = type;
+    failed_model_ = &spec;
     showHint(tr("Cannot show the robot: %1").arg(QString::fromStdString(e.what())));
   }
 }
@@ -158,6 +167,19 @@ void RobotView::setSafetyBox(bool enabled, const QVector3D& size, const QMatrix4
   if (scene_) scene_->setSafetyBox(enabled, size, frame);
 }
 
+void RobotView::setCorrectionEnvelope(bool visible, const QVector3D& min, const QVector3D& max) {
+  if (!scene_) return;
+  const bool was_visible = scene_->correctionEnvelopeVisible();
+  scene_->setCorrectionEnvelope(visible, min, max);
+  if (visible == was_visible || !container_ || !hint_) return;
+  QString tip = hint_->toolTip();
+  if (visible) {
+    tip += tr("\nThe faint violet box: where the flange can go within the RSI correction limits of this RSI "
+              "session (around where the robot stood when RSI started).");
+  }
+  container_->setToolTip(tip);
+}
+
 void RobotView::setWaypoints(const std::vector<QMatrix4x4>& poses) {
   std::vector<QVector3D> positions;
   for (const QMatrix4x4& pose : poses) positions.push_back(pose.column(3).toVector3D());
@@ -176,8 +198,9 @@ void RobotView::setLinkTints(const std::vector<LinkTint>& tints) {
   if (scene_) scene_->setLinkTints(tints);
 }
 
-void RobotView::setPullEnabled(bool enabled) {
+void RobotView::setPullEnabled(bool enabled, const QString& why_not) {
   pull_enabled_ = enabled;
+  pull_why_not_ = why_not;
   if (!enabled && pulling_) endPull();
 }
 

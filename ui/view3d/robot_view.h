@@ -14,12 +14,12 @@
 #include <array>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include <xmate/types.h>
 
 #include "link_tints.h"
+#include "model/robot_spec.h"
 #include "orbit_camera.h"
 
 class QLabel;
@@ -54,21 +54,28 @@ class RobotView : public QWidget {
   // next one (the session keeps ticking at rest, so the final pose is always drawn).
   bool liveUpdateDue();
 
-  // The robot model drawn (xMate7 Pro until set). Loads its URDF and meshes; on failure shows the
-  // error in the view and keeps the previous model.
-  void setModel(xmate::XmateType type);
-  xmate::XmateType model() const { return type_; }
+  // The robot model drawn, of either family (xMate7 Pro until set). Loads its URDF and meshes; on
+  // failure shows the error in the view and keeps the previous model. GUI thread, as every setter.
+  void setModel(const xmate::model::RobotSpec& spec);
+  void setModel(xmate::XmateType type);  // an xMate model
+  const xmate::model::RobotSpec& spec() const { return *spec_; }
+  // The xMate model drawn (meaningless for another family's model: see spec()).
+  xmate::XmateType model() const { return spec_->type; }
   void setJointPositions(const std::array<double, 7>& q);  // rad
-  void setTcpPose(const std::array<double, 16>& row_major);  // base frame (RobotState toolTobase)
+  void setTcpPose(const std::array<double, 16>& row_major);  // base frame, row-major (ArmState::tcp)
   void setSafetyBox(bool enabled, const QVector3D& size, const QMatrix4x4& frame);  // m; frame = centre
+  // The region the RSI corrections may move a KUKA's flange to in this RSI session (base frame, m);
+  // hidden when !visible.
+  void setCorrectionEnvelope(bool visible, const QVector3D& min = {}, const QVector3D& max = {});
   // Taught waypoints, as 4x4 TCP poses (column-major QMatrix4x4) or as positions, base frame, m.
   void setWaypoints(const std::vector<QMatrix4x4>& poses);
   void setWaypoints(const std::vector<QVector3D>& positions);
   void setPlannedPath(const std::vector<QVector3D>& points);
   void setLinkTints(const std::vector<LinkTint>& tints);  // link 1..dof
-  // Mouse pull (Shift + left-drag from the TCP) is offered only when enabled (simulator in drag
-  // mode); disabling it during a pull releases it.
-  void setPullEnabled(bool enabled);
+  // Mouse pull (Shift + left-drag from the TCP) is offered only when enabled (the xMate simulator in
+  // drag mode, the KUKA simulator); disabling it during a pull releases it. why_not: what a Shift+drag
+  // says while it is disabled ("" = how to enable it on the xMate simulator).
+  void setPullEnabled(bool enabled, const QString& why_not = QString());
   bool pullEnabled() const { return pull_enabled_; }
   bool pulling() const { return pulling_; }
 
@@ -117,14 +124,15 @@ class RobotView : public QWidget {
   bool software_ = false;
   QString renderer_;  // GL_RENDERER
   QElapsedTimer last_live_update_;
-  xmate::XmateType type_ = xmate::XMATE7_PRO;
-  std::optional<xmate::XmateType> failed_model_;  // the last model that could not be loaded
+  const xmate::model::RobotSpec* spec_;
+  const xmate::model::RobotSpec* failed_model_ = nullptr;  // the last model that could not be loaded
   OrbitCamera camera_;
   // Pointer drag state.
   enum class Drag { kNone, kOrbit, kPan, kPull };
   Drag drag_ = Drag::kNone;
   QPointF last_pixel_;
   bool pull_enabled_ = false;
+  QString pull_why_not_;
   bool pulling_ = false;
   QVector3D pull_point_;
   QPointF pull_pixel_;

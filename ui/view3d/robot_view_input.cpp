@@ -21,7 +21,9 @@ constexpr double kPullPickRadiusPx = 40;
 bool RobotView::beginPull(const QPointF& pixel) {
   if (!scene_) return false;
   if (!pull_enabled_) {
-    showHint(tr("Mouse pull needs the built-in simulator in drag mode (start hand guiding in the Drag panel)."));
+    showHint(!pull_why_not_.isEmpty()
+                 ? pull_why_not_
+                 : tr("Mouse pull needs the built-in simulator in drag mode (start hand guiding in the Drag panel)."));
     return false;
   }
   QPointF tcp_pixel;
