@@ -60,9 +60,17 @@ int main(int argc, char** argv) {
   setUpApplication();
   const QString temporary_settings = options.screenshot.isEmpty() ? QString() : useTemporarySettings();
 
-  // Without --model, the simulator simulates the model last used (xMate7 Pro the first time).
+  // Without --model, the simulator simulates the model last used (xMate7 Pro the first time): after
+  // a KUKA (simulated or over RSI), the built-in KUKA simulator of that model.
   if (!options.model_given && options.screenshot.isEmpty()) {
-    if (std::optional<rci::ui::SessionTarget> last = rci::ui::lastTarget()) options.target.type = last->type;
+    if (std::optional<rci::ui::SessionTarget> last = rci::ui::lastTarget()) {
+      options.target.type = last->type;
+      if (last->isKuka() && options.target.kind == rci::ui::SessionTarget::Kind::kSimulator &&
+          !options.target.lockstep) {
+        options.target.kind = rci::ui::SessionTarget::Kind::kKukaSimulator;
+        options.target.kuka_model = last->kuka_model;
+      }
+    }
   }
 
   rci::ui::Session session;

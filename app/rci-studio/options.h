@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Command-line options of rci-studio (QCommandLineParser): --model, --robot HOST:PORT, --lockstep,
-// --screenshot FILE, -h/--help, -v/--version.
+// Command-line options of rci-studio (QCommandLineParser): --model, --robot HOST:PORT | rsi:FILE,
+// --ft-sensor HOST[:PORT], --context FILE, --lockstep, --screenshot FILE, -h/--help, -v/--version.
+// Any thread (parsing reads the RSI files named).
 #pragma once
 
 #include <QString>

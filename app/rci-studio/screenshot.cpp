@@ -46,7 +46,7 @@ void takeScreenshotWhenReady(rci::ui::MainWindow& window, const QString& path) {
     finish(1, QStringLiteral("rci-studio: cannot take the screenshot: %1").arg(reason));
   });
   QObject::connect(&session, &rci::ui::Session::tick, armed, [&window, &session, path, armed] {
-    if (!session.live().has_state) return;
+    if (!session.live().has_state && !session.live().has_arm_state) return;  // an xMate's state, or a KUKA's
     armed->deleteLater();
     QTimer::singleShot(kSettleMs, &window, [&window, path] { capture(window, path); });
   });

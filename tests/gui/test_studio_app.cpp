@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// test_studio_app (under xvfb-run): runs the rci-studio program -- its option handling, and
-// --screenshot rendering the whole window with the 3D view to a PNG.
+// test_studio_app (under xvfb-run): runs the rci-studio program -- its option handling (the xMate's
+// and the KUKA's), and --screenshot rendering the whole window with the 3D view to a PNG.
+#include <QDir>
+#include <QFileInfo>
 #include <QImage>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -35,6 +37,11 @@ Run runStudio(const QStringList& arguments, int limit_ms = 120000) {
   return run;
 }
 
+// The sample RSI Ethernet config (two sample contexts beside it use it).
+QString sampleRsiConfig() {
+  return QDir(qEnvironmentVariable("RCI_DATA_DIR", QStringLiteral("."))).filePath(QStringLiteral("resources/rsi/RSI_EthernetConfig.xml"));
+}
+
 // Number of distinct colours in a grid of samples over rect: a rendered scene has many.
 int distinctColours(const QImage& image, const QRect& rect) {
   std::set<QRgb> colours;
@@ -55,6 +62,10 @@ class TestStudioApp : public QObject {
     QVERIFY(run.out.contains("--screenshot <FILE>"));
     QVERIFY(run.out.contains("--robot <HOST:PORT>"));
     QVERIFY(run.out.contains("Usage: rci-studio [options]"));
+    QVERIFY2(run.out.contains("--ft-sensor <HOST[:PORT]>"), qPrintable(run.out));
+    QVERIFY(run.out.contains("--context <FILE>"));
+    QVERIFY(run.out.contains("kr6_r900_sixx"));
+    QVERIFY(run.out.contains("rsi:FILE"));
     const Run shortHelp = runStudio({"-h"});
     QCOMPARE(shortHelp.code, 0);
     QCOMPARE(shortHelp.out, run.out);
@@ -95,6 +106,68 @@ class TestStudioApp : public QObject {
     const Run both = runStudio({"--screenshot", "x.png", "--robot", "10.0.0.1:1337"});
     QCOMPARE(both.code, 2);
     QVERIFY2(both.err.contains("--screenshot uses the built-in simulator; leave out --robot"), qPrintable(both.err));
+  }
+  void badKukaOptionsSayWhatToType() {
+    const QString config = sampleRsiConfig();
+    QVERIFY2(QFileInfo::exists(config), qPrintable(config));
+    const QString rsi = QStringLiteral("rsi:") + config;
+    // A KUKA model with an xMate's address, an xMate model with an RSI config.
+    const Run kuka_address = runStudio({"--model", "kr6_r900_sixx", "--robot", "10.0.0.1:1337"});
+    QCOMPARE(kuka_address.code, 2);
+    QVERIFY2(kuka_address.err.contains("kr6_r900_sixx is a KUKA") && kuka_address.err.contains("--robot rsi:"),
+             qPrintable(kuka_address.err));
+    const Run xmate_rsi = runStudio({"--model", "xmate7_pro", "--robot", rsi});
+    QCOMPARE(xmate_rsi.code, 2);
+    QVERIFY2(xmate_rsi.err.contains("xmate7_pro is an xMate") && xmate_rsi.err.contains("--robot HOST:PORT"),
+             qPrintable(xmate_rsi.err));
+    const Run no_model = runStudio({"--robot", rsi});
+    QCOMPARE(no_model.code, 2);
+    QVERIFY2(no_model.err.contains("add --model kr6_r900_sixx or --model kr16_2"), qPrintable(no_model.err));
+    // The files: missing, not an Ethernet config, and two contexts that use it.
+    const Run missing = runStudio({"--robot", "rsi:/nowhere/RSI_EthernetConfig.xml", "--model", "kr16_2"});
+    QCOMPARE(missing.code, 2);
+    QVERIFY2(missing.err.contains("\"/nowhere/RSI_EthernetConfig.xml\" does not exist"), qPrintable(missing.err));
+    const QString context = QFileInfo(config).absolutePath() + QStringLiteral("/rci_replay.rsi.xml");
+    const Run not_config = runStudio({"--robot", QStringLiteral("rsi:") + context, "--model", "kr16_2"});
+    QCOMPARE(not_config.code, 2);
+    QVERIFY2(not_config.err.contains("cannot be used") && not_config.err.contains("rci_replay.rsi.xml:"),
+             qPrintable(not_config.err));
+    const Run which = runStudio({"--robot", rsi, "--model", "kr16_2"});
+    QCOMPARE(which.code, 2);
+    QVERIFY2(which.err.contains("--context NAME.rsi.xml") && which.err.contains("rci_replay.rsi.xml"),
+             qPrintable(which.err));
+    const Run bad_context = runStudio({"--robot", rsi, "--model", "kr16_2", "--context", config});
+    QCOMPARE(bad_context.code, 2);
+    QVERIFY2(bad_context.err.contains("the RSI context cannot be used"), qPrintable(bad_context.err));
+    // Options that belong to a KUKA over RSI only; the sensor's address.
+    const Run sensor_sim = runStudio({"--model", "kr6_r900_sixx", "--ft-sensor", "192.168.1.1"});
+    QCOMPARE(sensor_sim.code, 2);
+    QVERIFY2(sensor_sim.err.contains("--ft-sensor is for a KUKA over RSI"), qPrintable(sensor_sim.err));
+    const Run bad_sensor =
+        runStudio({"--robot", rsi, "--model", "kr16_2", "--context", context, "--ft-sensor", "192.168.1.1:0"});
+    QCOMPARE(bad_sensor.code, 2);
+    QVERIFY2(bad_sensor.err.contains("is not a port of the F/T sensor"), qPrintable(bad_sensor.err));
+    const Run lockstep = runStudio({"--model", "kr16_2", "--lockstep"});
+    QCOMPARE(lockstep.code, 2);
+    QVERIFY2(lockstep.err.contains("leave out --lockstep"), qPrintable(lockstep.err));
+    const Run screenshot = runStudio({"--screenshot", "x.png", "--robot", rsi, "--model", "kr16_2", "--context", context});
+    QCOMPARE(screenshot.code, 2);
+    QVERIFY2(screenshot.err.contains("leave out --robot"), qPrintable(screenshot.err));
+    const Run unknown = runStudio({"--model", "kr210"});
+    QCOMPARE(unknown.code, 2);
+    QVERIFY2(unknown.err.contains("kr6_r900_sixx or kr16_2"), qPrintable(unknown.err));
+  }
+  void screenshotOfTheKukaSimulator() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath("kuka.png");
+    const Run run = runStudio({"--model", "kr6_r900_sixx", "--screenshot", path});
+    QVERIFY2(run.code == 0, qPrintable(run.err));
+    QVERIFY2(!run.out.contains("placeholder"), qPrintable(run.out));
+    QImage image(path);
+    QVERIFY(!image.isNull());
+    const QRect view(image.width() * 3 / 10, image.height() / 10, image.width() * 4 / 10, image.height() * 4 / 10);
+    QVERIFY2(distinctColours(image, view) > 20, "the 3D view area looks empty");
   }
   void screenshotShowsTheWindowAndRobot() {
     QTemporaryDir dir;

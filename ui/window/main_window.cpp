@@ -391,6 +391,10 @@ bool MainWindow::restoreGeometryFor(const QString& group, const QRect& available
 // which docks are shown and tabbed, with default sizes for this screen.
 void MainWindow::restoreDockLayout(const QString& group) {
   QSettings s = windowSettings();
+  // Docks hidden only because the last robot lacked what they need come back for one that has it.
+  const QStringList hidden_for_robot = s.value(QStringLiteral("window/hiddenForRobot")).toStringList();
+  for (QDockWidget* dock : docks_)
+    if (hidden_for_robot.contains(dock->objectName())) hidden_for_robot_.insert(dock);
   const QByteArray sized = s.value(group + QStringLiteral("/state")).toByteArray();
   layout_restored_ = !sized.isEmpty() && restoreState(sized, kLayoutVersion);
   if (layout_restored_) return;
@@ -402,6 +406,9 @@ void MainWindow::saveLayout() {
   QSettings s = windowSettings();
   const QByteArray state = saveState(kLayoutVersion);
   s.setValue(QStringLiteral("window/state"), state);
+  QStringList hidden_for_robot;
+  for (const QDockWidget* dock : hidden_for_robot_) hidden_for_robot << dock->objectName();
+  s.setValue(QStringLiteral("window/hiddenForRobot"), hidden_for_robot);
   s.beginGroup(screenSizeGroup(screen()->availableGeometry().size()));
   s.setValue(QStringLiteral("geometry"), normalGeometry());
   s.setValue(QStringLiteral("frame"), frameGeometry());
@@ -411,6 +418,8 @@ void MainWindow::saveLayout() {
 
 void MainWindow::resetLayout() {
   restoreState(default_state_, kLayoutVersion);
+  hidden_for_robot_.clear();
+  if (session_.isOpen()) showApplicablePanels();
   for (QDockWidget* dock : docks_) dock->setFloating(false);
   applyDefaultDockSizes();
   showFullTabNames();

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // StatusStrip: the status bar fields -- target, robot mode, motor power, real-time thread, loop
-// rate, period jitter p99, command success rate, active error bits (in red).
+// rate, period jitter p99, command success rate, active error bits (in red); on a KUKA over RSI
+// instead: the RSI phase, cycle, late answers, answer time p99, real-time thread and F/T sensor.
+// GUI thread only.
 #pragma once
 
 #include <QObject>
 #include <QString>
+
+#include <vector>
 
 #include <xmate/rci_types.h>
 
@@ -29,7 +33,11 @@ class StatusStrip : public QObject {
  private:
   QLabel* field(const char* name, const QString& tooltip);
   void refreshOpen();
+  void refreshRsi();
   void refreshClosed();
+  // Shows the fields of one family (the RSI ones or the xMate's) with their rules.
+  void showFamily(bool rsi);
+  void showField(QLabel* label, bool shown);
   QFrame* errorsRule() const;
   QString problemsTip() const;
 
@@ -43,6 +51,13 @@ class StatusStrip : public QObject {
   QLabel* jitter_ = nullptr;
   QLabel* success_ = nullptr;
   QLabel* errors_ = nullptr;
+  QLabel* rsi_ = nullptr;      // RSI phase
+  QLabel* cycle_ = nullptr;    // RSI cycle
+  QLabel* late_ = nullptr;     // late answers: the robot's count and the PC's
+  QLabel* answer_ = nullptr;   // the PC's answer time p99
+  QLabel* sensor_ = nullptr;   // the F/T sensor
+  std::vector<QLabel*> xmate_fields_, rsi_fields_;
+  int family_shown_ = -1;      // 0 xMate, 1 RSI, -1 not yet
 };
 
 // "Idle", "Moving", "Hand guiding", ... for RobotState::robot_mode.
