@@ -61,6 +61,7 @@ class TestKukaWindow : public QObject {
   void teachesAndReplays();
   void reportsRsiTimeoutAndRecovers();
   void switchesBackToAnXmate();
+  void nextStartShowsThePanelsTheRobotHas();
 
  private:
   const xmate::arm::ArmState& arm() const { return session_->live().arm; }
@@ -140,7 +141,7 @@ void TestKukaWindow::showsThePanelsThatApply() {
 }
 
 void TestKukaWindow::startGuiding(int axes) {
-  QVERIFY(driver_->click(QStringLiteral("guide.axes.%1").arg(axes)));
+  QVERIFY(driver_->choose(QStringLiteral("guide.axes"), axes));
   QVERIFY(driver_->click(QStringLiteral("guide.start")));
   QTRY_VERIFY_WITH_TIMEOUT(driver_->find<Lamp>(QStringLiteral("guide.lamp"))->isOn(), kWaitMs);
 }
@@ -235,6 +236,28 @@ void TestKukaWindow::switchesBackToAnXmate() {
   QVERIFY(dockVisible(QStringLiteral("panel.drag")));
   QVERIFY(!dockVisible(QStringLiteral("panel.guide")));
   QTRY_VERIFY_WITH_TIMEOUT(session_->live().has_state, kWaitMs);
+}
+
+// Quit while a KUKA is connected (its xMate-only panels hidden), start again, connect an xMate: they
+// are back -- the saved layout does not keep them hidden as if the operator had closed them.
+void TestKukaWindow::nextStartShowsThePanelsTheRobotHas() {
+  QSignalSpy opened(session_, &Session::opened);
+  window_->connectTo(test::kukaSimulator());
+  QTRY_COMPARE_WITH_TIMEOUT(opened.count(), 1, kWaitMs);
+  QVERIFY(!dockVisible(QStringLiteral("panel.power")));
+  QVERIFY(window_->close());
+  driver_.reset();
+  delete window_;
+  session_->close();
+  window_ = new MainWindow(*session_);
+  window_->resize(1600, 1000);
+  window_->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window_));
+  window_->connectTo(test::lockstepSimulator());
+  QTRY_COMPARE_WITH_TIMEOUT(opened.count(), 2, kWaitMs);
+  QVERIFY(dockVisible(QStringLiteral("panel.power")));
+  QVERIFY(dockVisible(QStringLiteral("panel.drag")));
+  QVERIFY(!dockVisible(QStringLiteral("panel.guide")));
 }
 
 QTEST_MAIN(TestKukaWindow)

@@ -3,14 +3,14 @@
 // bounded by the RSI correction limits, and shows its status on each display tick.
 #include "panels/force_guide_panel.h"
 
-#include <QButtonGroup>
+#include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QRadioButton>
 
+#include <algorithm>
 #include <cmath>
 
 #include "arm/rsi_arm.h"
@@ -60,21 +60,14 @@ ForceGuidePanel::ForceGuidePanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("guide"), tr("Hand guiding"), parent) {
   auto* how = new QGroupBox(tr("Guide by the force sensor"), this);
   auto* form = new QFormLayout(how);
-  auto* axes_row = new QHBoxLayout;
-  axes_ = new QButtonGroup(how);
-  const std::pair<GuideAxes, QString> choices[] = {{GuideAxes::kTranslation, tr("Translation")},
-                                                   {GuideAxes::kRotation, tr("Rotation")},
-                                                   {GuideAxes::kFree, tr("Free")}};
-  for (const auto& [axes, name] : choices) {
-    auto* button = new QRadioButton(name, how);
-    button->setObjectName(QStringLiteral("guide.axes.%1").arg(int(axes)));
-    axes_->addButton(button, int(axes));
-    axes_row->addWidget(button);
-  }
-  axes_->button(int(GuideAxes::kTranslation))->setToolTip(tr("Your push moves the tool; its orientation is held"));
-  axes_->button(int(GuideAxes::kRotation))->setToolTip(tr("Your twist turns the tool about the flange; its position is held"));
-  axes_->button(int(GuideAxes::kFree))->setToolTip(tr("The tool follows both push and twist"));
-  form->addRow(tr("Guide"), axes_row);
+  axes_ = new QComboBox(how);
+  axes_->setObjectName(QStringLiteral("guide.axes"));
+  axes_->addItem(tr("Translation only"), int(GuideAxes::kTranslation));
+  axes_->addItem(tr("Rotation only"), int(GuideAxes::kRotation));
+  axes_->addItem(tr("Free"), int(GuideAxes::kFree));
+  axes_->setToolTip(tr("Translation: your push moves the tool, its orientation is held. Rotation: your twist turns "
+                       "the tool about the flange, its position is held. Free: both"));
+  form->addRow(tr("Guide"), axes_);
 
   const xmate::guide::GuideParameters defaults;
   mass_ = makeNumberField(QStringLiteral("guide.mass"), 1, 50, 1, tr(" kg"),
@@ -97,15 +90,18 @@ ForceGuidePanel::ForceGuidePanel(Session& session, QWidget* parent)
   tool_mass_ = makeNumberField(QStringLiteral("guide.toolMass"), 0, 30, 2, tr(" kg"),
                                tr("The tool hanging on the sensor: its weight is removed at every pose"), how);
   form->addRow(tr("Tool mass"), tool_mass_);
+  auto* center_label = new QLabel(tr("Tool centre of mass: x, y, z in mm, flange frame"), how);
+  center_label->setWordWrap(true);
+  form->addRow(center_label);
   auto* center_row = new QHBoxLayout;
   for (const char* axis : {"x", "y", "z"}) {
     auto* field = makeNumberField(QStringLiteral("guide.toolCenter.%1").arg(QLatin1String(axis)), -500, 500, 0,
-                                  tr(" mm"), tr("The tool's centre of mass in the flange frame (%1)").arg(QLatin1String(axis)),
+                                  QString(), tr("The tool's centre of mass in the flange frame (%1)").arg(QLatin1String(axis)),
                                   how);
     tool_center_.push_back(field);
     center_row->addWidget(field);
   }
-  form->addRow(tr("Tool centre"), center_row);
+  form->addRow(center_row);
   body()->addWidget(how);
 
   auto* state_box = new QGroupBox(tr("State"), this);
@@ -142,8 +138,7 @@ ForceGuidePanel::ForceGuidePanel(Session& session, QWidget* parent)
 
   loadFields({mass_, damping_, speed_, dead_band_, tool_mass_});
   loadFields(tool_center_);
-  const int axes = loadValue(QStringLiteral("axes"), int(GuideAxes::kTranslation)).toInt();
-  (axes_->button(axes) ? axes_->button(axes) : axes_->button(int(GuideAxes::kTranslation)))->setChecked(true);
+  axes_->setCurrentIndex(std::max(0, axes_->findData(loadValue(QStringLiteral("axes"), int(GuideAxes::kTranslation)))));
 
   connect(start_, &QPushButton::clicked, this, &ForceGuidePanel::start);
   connect(stop_, &QPushButton::clicked, this, &ForceGuidePanel::stop);
@@ -175,7 +170,7 @@ void ForceGuidePanel::start() {
     return;
   }
   xmate::guide::GuideParameters parameters;
-  parameters.axes = GuideAxes(axes_->checkedId());
+  parameters.axes = GuideAxes(axes_->currentData().toInt());
   parameters.mass = mass_->value();
   parameters.damping = damping_->value();
   parameters.max_speed = speed_->value() * 1e-3;
@@ -185,7 +180,7 @@ void ForceGuidePanel::start() {
                                  tool_center_[2]->value() * 1e-3}};
   saveFields({mass_, damping_, speed_, dead_band_, tool_mass_});
   saveFields(tool_center_);
-  saveValue(QStringLiteral("axes"), axes_->checkedId());
+  saveValue(QStringLiteral("axes"), axes_->currentData());
 
   auto guide = std::make_shared<ForceGuide>(*sensor, arm->spec(), arm->cycleSeconds(), parameters, tool);
   std::array<double, 7> lower{}, upper{};
@@ -213,7 +208,7 @@ void ForceGuidePanel::showGuideStatus() {
     return;
   }
   const GuideStatus s = guide_->guide.status();
-  lamp_->setOn(guiding_ && s.end == GuideEnd::kRunning);
+  lamp_->setOn(guiding_ && s.cycles > 0 && s.end == GuideEnd::kRunning);  // on once the bias is taken
   if (guiding_ && s.cycles == 0) {
     state_->setText(tr("Starting: waiting for the robot's first cycle …"));
   } else if (guiding_ && s.end == GuideEnd::kRunning) {

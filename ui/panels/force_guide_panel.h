@@ -8,7 +8,7 @@
 
 #include "panels/panel_base.h"
 
-class QButtonGroup;
+class QComboBox;
 class QLabel;
 class QPushButton;
 
@@ -36,7 +36,7 @@ class ForceGuidePanel : public PanelBase {
   void stop();
   void showGuideStatus();
 
-  QButtonGroup* axes_ = nullptr;  // ids: GuideAxes
+  QComboBox* axes_ = nullptr;  // data: GuideAxes
   QDoubleSpinBox* mass_ = nullptr;
   QDoubleSpinBox* damping_ = nullptr;
   QDoubleSpinBox* speed_ = nullptr;       // mm/s

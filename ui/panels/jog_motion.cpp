@@ -46,19 +46,47 @@ JointLimitsRad jogLimits(const xmate::model::RobotSpec& spec, bool soft_enabled,
   return l;
 }
 
+JointLimitsRad withinCorrectionLimits(const JointLimitsRad& limits, const std::array<double, 6>& q_on,
+                                      const xmate::rsi::AxisCorrectionLimits& correction) {
+  JointLimitsRad l = limits;
+  for (size_t i = 0; i < 6; ++i) {
+    l.lower[i] = std::max(l.lower[i], q_on[i] + correction.lower[i] + kJogLimitMargin);
+    l.upper[i] = std::min(l.upper[i], q_on[i] + correction.upper[i] - kJogLimitMargin);
+  }
+  return l;
+}
+
 JointJog::JointJog(const xmate::model::RobotSpec& spec, int joint, int direction, double speed_fraction,
-                   const JointLimitsRad& limits, const JogFlags& flags)
+                   const JointLimitsRad& limits, const JogFlags& flags, double cycle_s)
     : joint_(joint),
       direction_(direction >= 0 ? 1 : -1),
       limits_(limits),
       flags_(flags),
-      ramp_(jointRamp(spec, joint, speed_fraction)) {}
+      ramp_(jointRamp(spec, joint, speed_fraction), cycle_s) {}
 
 xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
-  const int cycles = started_ ? elapsedCycles(last_id_, state.message_id) : 1;
-  last_id_ = state.message_id;
+  // At start the command equals the measured position (docs/robot_models.md, "Command rules").
+  xmate::JointPositions command;
+  const bool last = advance(state.message_id, state.q, command.q);
+  if (last) return xmate::MotionFinished(command);
+  return command;
+}
+
+bool JointJogMotion::command(const xmate::arm::ArmSample& now, std::array<double, 7>& q) {
+  if (session_ != 0 && now.session != session_) {  // RSI restarted since the jog was planned: hold still
+    session_changed_ = true;
+    q = now.q_command;
+    return true;
+  }
+  watch_();
+  return jog_.advance(now.cycle, now.q_command, q);
+}
+
+bool JointJog::advance(uint64_t cycle, const std::array<double, 7>& start, std::array<double, 7>& q) {
+  const int cycles = started_ ? elapsedCycles(last_id_, cycle) : 1;
+  last_id_ = cycle;
   if (!started_) {
-    q_ = state.q;  // at start the command equals the measured position (docs/robot_models.md, "Command rules")
+    q_ = start;
     started_ = true;
   }
   const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);
@@ -73,9 +101,8 @@ xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
       target = 0;
   }
   for (int c = 0; c < cycles; ++c) q_[joint_] += ramp_.step(target);
-  xmate::JointPositions command{q_};
-  if (!go && ramp_.atRest()) return xmate::MotionFinished(command);
-  return command;
+  q = q_;
+  return !go && ramp_.atRest();
 }
 
 CartesianJog::CartesianJog(int axis, int direction, double speed_fraction, int dof, const JointLimitsRad& limits,

@@ -1,21 +1,25 @@
 // SPDX-License-Identifier: Apache-2.0
-// The real-time side of a jog: per-cycle command generators for Robot::Control(). While the jog
-// button is held the axis ramps up to the jog speed; on release (or a stop request) it ramps down
-// and the motion ends with MotionFinished. It brakes on its own before a soft or hardware limit.
-// The ramp advances by the controller's elapsed cycles (message_id), so a lost state does not turn the
-// next command into a double step. Runs on the client's real-time thread: no allocation, no locks,
-// no Qt.
+// The real-time side of a jog: per-cycle command generators for Robot::Control() (xMate) and, for
+// the joint jog, an arm::JointMotion for any arm (a KUKA over RSI). While the jog button is held
+// the axis ramps up to the jog speed; on release (or a stop request) it ramps down and the motion
+// ends with MotionFinished. It brakes on its own before a soft or hardware limit (on a KUKA also
+// before the RSI context's correction limits). The ramp advances by the controller's elapsed cycles
+// (message_id / ArmSample::cycle), so a lost state does not turn the next command into a double
+// step. Runs on the controller's real-time thread: no allocation, no locks, no Qt.
 #pragma once
 
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 
 #include <xmate/rci_types.h>
 #include <xmate/types.h>
 
+#include "arm/arm.h"
 #include "model/robot_spec.h"
 #include "panels/jog_ramp.h"
+#include "rsi/joint_stream.h"
 
 namespace rci::ui {
 
@@ -52,12 +56,23 @@ struct JointLimitsRad {
 JointLimitsRad jogLimits(const xmate::model::RobotSpec& spec, bool soft_enabled, const std::array<double, 7>& soft_lower_deg,
                          const std::array<double, 7>& soft_upper_deg);
 
-// Joint jog of one joint: startMove(kJointPosition, kJointPosition) + Control(JointControl).
+// `limits` narrowed to the total axis corrections an RSI context lets through (AXISCORR, AXISCORRMON:
+// rad, relative to q_on, the set-point where RSI was switched on), each kJogLimitMargin inside.
+// Any thread; real-time safe.
+JointLimitsRad withinCorrectionLimits(const JointLimitsRad& limits, const std::array<double, 6>& q_on,
+                                      const xmate::rsi::AxisCorrectionLimits& correction);
+
+// Joint jog of one joint: startMove(kJointPosition, kJointPosition) + Control(JointControl) on an
+// xMate, or through JointJogMotion on any arm. cycle_s: the controller's cycle (Arm::cycleSeconds()).
 class JointJog {
  public:
   JointJog(const xmate::model::RobotSpec& spec, int joint, int direction, double speed_fraction,
-           const JointLimitsRad& limits, const JogFlags& flags);
+           const JointLimitsRad& limits, const JogFlags& flags, double cycle_s = 0.001);
+  // The controller's cycle: this cycle's command (starting from the measured joints).
   xmate::JointPositions next(const RCI::robot::RobotState& state);
+  // The same for any controller: `cycle` its cycle counter, `start` the joints the first command
+  // equals. Writes q; returns true on the last command (at rest after release or stop).
+  bool advance(uint64_t cycle, const std::array<double, 7>& start, std::array<double, 7>& q);
 
  private:
   int joint_, direction_;
@@ -67,6 +82,25 @@ class JointJog {
   bool started_ = false;
   uint64_t last_id_ = 0;  // message_id of the previous state: the ramp advances by elapsed cycles
   std::array<double, 7> q_{};
+};
+
+// A JointJog as the arm::JointMotion Session::runArmMotion streams (Arm::runJointMotion). Each
+// cycle it first calls `watch` (the dead-man and stop checks, which set the jog's flags), then
+// advances the jog from where the arm is commanded to be (RSI holds the last correction between
+// motions). Ends at once, holding still, if the arm's session is not `session` (0: any). The arm's
+// real-time thread; `watch` must be real-time safe.
+class JointJogMotion : public xmate::arm::JointMotion {
+ public:
+  JointJogMotion(JointJog& jog, std::function<void()> watch, uint32_t session = 0)
+      : jog_(jog), watch_(std::move(watch)), session_(session) {}
+  bool command(const xmate::arm::ArmSample& now, std::array<double, 7>& q) override;
+  bool sessionChanged() const { return session_changed_; }  // after the motion: it ended for that
+
+ private:
+  JointJog& jog_;
+  std::function<void()> watch_;
+  uint32_t session_;
+  bool session_changed_ = false;
 };
 
 // Cartesian jog of the TCP along or about one base axis (0..2 x, y, z; 3..5 rx, ry, rz):

@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QSlider>
 
+#include "arm/rsi_arm.h"
 #include "panels/fields.h"
 #include "panels/jog_motion.h"
 #include "session/session.h"
@@ -19,6 +20,30 @@
 namespace rci::ui {
 
 using RCI::robot::StartMoveRequest;
+
+namespace {
+
+// The axis as the robot's maker names it: J1.. on an xMate, A1.. on a KUKA.
+QString axisName(const xmate::model::RobotSpec& spec, int i) {
+  return (spec.family == xmate::model::RobotFamily::kKuka ? QStringLiteral("A%1") : QStringLiteral("J%1")).arg(i + 1);
+}
+
+// Each cycle on the controller's real-time thread: stop requests end the jog; so does a window that
+// stopped responding (dead-man: the GUI thread did not tick for kJogDeadManMs, so a button release
+// might go unseen) -- the jog ramps down. Lock-free.
+void watchStop(JogFlags& flags, const MotionToken& token) {
+  if (token.stopRequested()) flags.stop.store(true, std::memory_order_relaxed);
+  if (token.windowSilenceMs() > kJogDeadManMs) {
+    flags.held.store(false, std::memory_order_relaxed);
+    flags.window_silent.store(true, std::memory_order_relaxed);
+  }
+}
+
+const char* const kWindowSilent =
+    "the jog stopped because the window did not respond for more than 150 ms (it could not have seen the button's "
+    "release); press and hold the button again";
+
+}  // namespace
 
 JogPanel::JogPanel(Session& session, QWidget* parent)
     : PanelBase(session, QStringLiteral("jog"), tr("Jog"), parent) {
@@ -43,9 +68,10 @@ JogPanel::JogPanel(Session& session, QWidget* parent)
   body()->addWidget(speed_group);
   body()->addWidget(makeJointGroup());
   body()->addWidget(makeCartesianGroup());
-  auto* hint = new QLabel(tr("Hold a button to move; release to stop. Motors must be on."), this);
-  hint->setWordWrap(true);
-  body()->addWidget(hint);
+  hint_ = new QLabel(tr("Hold a button to move; release to stop. Motors must be on."), this);
+  hint_->setObjectName(QStringLiteral("jog.hint"));
+  hint_->setWordWrap(true);
+  body()->addWidget(hint_);
   showModel();
   // Motion results (GUI thread, queued by the session).
   connect(&session, &Session::motionFinished, this, [this](const QString& label, bool ok, const QString& message) {
@@ -70,9 +96,9 @@ QPushButton* JogPanel::makeJogButton(const QString& name, const QString& text, c
   button->setAutoRepeat(false);
   button->setMinimumWidth(44);
   addSendWidget(button);
-  const QString what = tip;
+  // The tooltip names the axis as the open robot's maker does (showModel()).
   connect(button, &QPushButton::pressed, this,
-          [this, cartesian, axis, direction, what] { press(cartesian, axis, direction, what); });
+          [this, button, cartesian, axis, direction] { press(cartesian, axis, direction, button->toolTip()); });
   connect(button, &QPushButton::released, this, &JogPanel::release);
   return button;
 }
@@ -82,6 +108,7 @@ QWidget* JogPanel::makeJointGroup() {
   auto* grid = new QGridLayout(group);
   for (int i = 0; i < 7; ++i) {
     auto* label = new QLabel(QStringLiteral("J%1").arg(i + 1), group);
+    joint_names_[i] = label;
     auto* minus = makeJogButton(QStringLiteral("jog.joint%1.minus").arg(i + 1), QStringLiteral("−"),
                                 tr("J%1 \u2212").arg(i + 1), false, i, -1, group);
     auto* plus = makeJogButton(QStringLiteral("jog.joint%1.plus").arg(i + 1), QStringLiteral("+"),
@@ -104,6 +131,8 @@ QWidget* JogPanel::makeJointGroup() {
 
 QWidget* JogPanel::makeCartesianGroup() {
   auto* group = new QGroupBox(tr("TCP (base frame)"), this);
+  group->setObjectName(QStringLiteral("jog.cart"));
+  cartesian_group_ = group;
   auto* grid = new QGridLayout(group);
   const char* axes[6] = {"x", "y", "z", "rx", "ry", "rz"};
   for (int i = 0; i < 6; ++i) {
@@ -124,6 +153,10 @@ double JogPanel::speedFraction() const { return speed_->value() / 100.0; }
 
 void JogPanel::press(bool cartesian, int axis, int direction, const QString& what) {
   if (!isOpen()) return;
+  xmate::arm::Arm* arm = session().arm();
+  if (!arm) return;
+  // The Cartesian jog needs the xMate's Cartesian control (its group is disabled otherwise).
+  if (cartesian && !session().robot()) return;
   if (active_) active_->held.store(false);  // a press without release (focus lost): end that jog
   auto flags = std::make_shared<JogFlags>();
   active_ = flags;
@@ -131,19 +164,17 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
   const OperatorSettings& o = session().operatorSettings();
   const JointLimitsRad limits = jogLimits(model, o.soft_limits_enabled, o.soft_lower_deg, o.soft_upper_deg);
   const double speed = speedFraction();
+  const double cycle_s = arm->cycleSeconds();
+  const QString label = title() + QStringLiteral(": ") + what;
   showStatus(tr("jog %1 ...").arg(what), false);
+  if (!session().robot()) {
+    pressArm(axis, direction, label, limits, speed);
+    return;
+  }
   // The job runs on the session's motion worker; the callbacks on the client's real-time thread.
   // GUI -> real time: the atomics of JogFlags (shared_ptr keeps them alive for both sides).
-  session().runMotion(title() + QStringLiteral(": ") + what, [=, &model](xmate::Robot& robot, const MotionToken& token) {
-    // Stop requests end the jog; so does a window that stopped responding (dead-man: the GUI thread
-    // did not tick for kJogDeadManMs, so a button release might go unseen) -- the jog ramps down.
-    auto stop_watch = [flags, &token] {
-      if (token.stopRequested()) flags->stop.store(true, std::memory_order_relaxed);
-      if (token.windowSilenceMs() > kJogDeadManMs) {
-        flags->held.store(false, std::memory_order_relaxed);
-        flags->window_silent.store(true, std::memory_order_relaxed);
-      }
-    };
+  session().runMotion(label, [=, &model](xmate::Robot& robot, const MotionToken& token) {
+    auto stop_watch = [flags, &token] { watchStop(*flags, token); };
     if (cartesian) {
       CartesianJog jog(axis, direction, speed, model.dof, limits, *flags);
       robot.startMove(StartMoveRequest::ControllerMode::kCartesianPosition,
@@ -153,7 +184,7 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
         return jog.next(state);
       }));
     } else {
-      JointJog jog(model, axis, direction, speed, limits, *flags);
+      JointJog jog(model, axis, direction, speed, limits, *flags, cycle_s);
       robot.startMove(StartMoveRequest::ControllerMode::kJointPosition,
                       StartMoveRequest::MotionGeneratorMode::kJointPosition);
       robot.Control(xmate::JointControl([&jog, &stop_watch](RCI::robot::RobotState state) {
@@ -161,9 +192,36 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
         return jog.next(state);
       }));
     }
-    if (flags->window_silent.load())
-      throw std::runtime_error("the jog stopped because the window did not respond for more than 150 ms (it could "
-                               "not have seen the button's release); press and hold the button again");
+    if (flags->window_silent.load()) throw std::runtime_error(kWindowSilent);
+  });
+}
+
+void JogPanel::pressArm(int axis, int direction, const QString& label, const JointLimitsRad& limits, double speed) {
+  std::shared_ptr<JogFlags> flags = active_;
+  const auto& model = spec();
+  // Valid while the job runs: the session keeps its link until the motion worker has ended.
+  xmate::arm::RsiArm* rsi = session().rsiArm();
+  session().runArmMotion(label, [=, &model](xmate::arm::Arm& arm, const MotionToken& token) {
+    JointLimitsRad within = limits;
+    uint32_t rsi_session = 0;
+    if (rsi) {
+      // RSI moves the axes only within the context's correction limits around where it was
+      // switched on: the jog brakes before them.
+      xmate::rsi::StreamState s;
+      if (!rsi->stream().state(s))
+        throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived; start the KRL program (RSI_ON, "
+                                 "RSI_MOVECORR) on the robot");
+      within = withinCorrectionLimits(limits, s.q_on, rsi->stream().limits());
+      rsi_session = s.session;
+    }
+    std::function<void()> stop_watch = [flags, &token] { watchStop(*flags, token); };
+    JointJog jog(model, axis, direction, speed, within, *flags, arm.cycleSeconds());
+    JointJogMotion motion(jog, stop_watch, rsi_session);
+    arm.runJointMotion(motion);
+    if (motion.sessionChanged())
+      throw std::runtime_error("RSI was switched on again just as the jog started (a new RSI session); press and "
+                               "hold the button again");
+    if (flags->window_silent.load()) throw std::runtime_error(kWindowSilent);
   });
 }
 
@@ -184,16 +242,38 @@ void JogPanel::hideEvent(QHideEvent* event) {
 }
 
 void JogPanel::showModel() {
-  for (int i = 0; i < 7; ++i)
+  const auto& model = spec();
+  for (int i = 0; i < 7; ++i) {
     for (auto* w : joint_rows_[i]) w->setVisible(i < dof());
+    const QString name = axisName(model, i);
+    joint_names_[i]->setText(name);
+    if (auto* minus = qobject_cast<QPushButton*>(joint_rows_[i].value(1))) minus->setToolTip(tr("%1 \u2212").arg(name));
+    if (auto* plus = qobject_cast<QPushButton*>(joint_rows_[i].value(2))) plus->setToolTip(tr("%1 +").arg(name));
+    angles_[i]->setToolTip(tr("Measured position of axis %1").arg(name));
+  }
 }
 
-void JogPanel::sessionOpened() { showModel(); }
+void JogPanel::sessionOpened() {
+  showModel();
+  // The Cartesian jog streams poses to the xMate's Cartesian control; other arms jog their axes.
+  const bool cartesian = session().robot() != nullptr;
+  cartesian_group_->setEnabled(cartesian);
+  cartesian_group_->setToolTip(cartesian ? QString()
+                                         : tr("Jogging the TCP works on an xMate only; on this robot jog the axes "
+                                              "one at a time above."));
+  const xmate::arm::Capabilities caps = session().arm() ? session().arm()->capabilities() : 0;
+  QString hint = tr("Hold a button to move; release to stop.");
+  if (xmate::arm::has(caps, xmate::arm::Capability::kPowerControl)) hint += tr(" Motors must be on.");
+  if (xmate::arm::has(caps, xmate::arm::Capability::kCorrectionLimits))
+    hint += tr(" The robot's program must have RSI on; each axis moves only as far from where RSI was switched on "
+               "as the RSI context allows, and the jog stops 1 deg before that.");
+  hint_->setText(hint);
+}
 
 void JogPanel::refresh(const LiveState& live) {
-  if (!live.has_state) return;
+  if (!live.has_arm_state) return;
   for (int i = 0; i < live.dof && i < 7; ++i)
-    angles_[i]->setText(QStringLiteral("%1 deg").arg(live.state.q[i] * kDegPerRad, 0, 'f', 2));
+    angles_[i]->setText(QStringLiteral("%1 deg").arg(live.arm.sample.q[size_t(i)] * kDegPerRad, 0, 'f', 2));
 }
 
 void JogPanel::sessionClosed() {

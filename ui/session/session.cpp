@@ -329,7 +329,10 @@ void Session::Impl::refreshLive() {
   if (connection.latestState(live.state)) {
     live.has_state = true;
     live.tau_ext = externalJointTorques(*link->model, live.state.q, live.state.tau_ext_in_base);
-    live.has_arm_state = link->arm->latest(live.arm);
+    // The arm's view of the same state (not a second read: the two must agree).
+    live.arm.sample = xmate::arm::armSample(xmate::client::makeStateSample(live.state, 0));
+    live.arm.tcp = live.state.toolTobase_pos_m;
+    live.has_arm_state = true;
   }
   live.realtime = connection.realtimeStatus();
   live.timing = connection.timing();

@@ -96,7 +96,9 @@ std::vector<std::string> RciArm::inputNames() const { return names(false); }
 
 void RciArm::setOutput(size_t index, bool level) {
   checkSignal(index, "output");
-  robot_.setDO(RCI::robot::DOSIGNAL(uint8_t(index)), level);
+  if (!robot_.setDO(RCI::robot::DOSIGNAL(uint8_t(index)), level))
+    throw std::runtime_error("the controller refused the output change of " +
+                             model::doName(model::RobotFamily::kXmate, int(index)));
 }
 
 bool RciArm::input(size_t index) {
