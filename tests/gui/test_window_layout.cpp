@@ -27,6 +27,7 @@
 #include <memory>
 
 #include "session/session.h"
+#include "gui_test_support.h"
 #include "window/main_window.h"
 #include "window/window_geometry.h"
 
@@ -133,6 +134,8 @@ class TestWindowLayout : public QObject {
   void defaultDockSizes();
   void panelsFitWithoutHorizontalScrolling_data();
   void panelsFitWithoutHorizontalScrolling();
+  void kukaPanelsFitWithoutHorizontalScrolling_data();
+  void kukaPanelsFitWithoutHorizontalScrolling();
   void keyControlsInView_data();
   void keyControlsInView();
   void programTypeColumnReadable();
@@ -240,6 +243,18 @@ void TestWindowLayout::checkPanelsFit(MainWindow& window) {
 void TestWindowLayout::panelsFitWithoutHorizontalScrolling() {
   QFETCH(int, screen);
   Opened o = openOn(screen == 0 ? kLarge : kSmall);
+  checkPanelsFit(*o.window);
+}
+
+void TestWindowLayout::kukaPanelsFitWithoutHorizontalScrolling_data() { defaultDockSizes_data(); }
+
+// The same with a KUKA connected: the panels show its signals, limits and simulator controls.
+void TestWindowLayout::kukaPanelsFitWithoutHorizontalScrolling() {
+  QFETCH(int, screen);
+  Opened o = openOn(screen == 0 ? kLarge : kSmall);
+  o.window->connectTo(rci::ui::test::kukaSimulator());
+  QTRY_VERIFY_WITH_TIMEOUT(o.session->isOpen() && o.session->live().has_arm_state, 30000);
+  settle();
   checkPanelsFit(*o.window);
 }
 

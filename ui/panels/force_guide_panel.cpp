@@ -129,7 +129,7 @@ ForceGuidePanel::ForceGuidePanel(Session& session, QWidget* parent)
   stop_ = new QPushButton(tr("Stop guiding"), state_box);
   stop_->setObjectName(QStringLiteral("guide.stop"));
   stop_->setToolTip(tr("The arm slows down to a stop and holds"));
-  addSendWidget(start_);
+  start_->setEnabled(false);  // refresh(): while connected and no motion runs
   buttons->addStretch(1);
   buttons->addWidget(start_);
   buttons->addWidget(stop_);
@@ -149,7 +149,10 @@ ForceGuidePanel::ForceGuidePanel(Session& session, QWidget* parent)
     if (!ok) showFailure(tr("Hand guiding"), message);
   });
   connect(&session, &Session::commandFinished, this, [this](const QString& label, bool ok, const QString& message) {
-    if (label == kMotionLabel && !ok) showFailure(tr("Hand guiding"), message);  // refused to start
+    if (label != kMotionLabel || ok) return;
+    guiding_ = false;  // refused to start (another motion runs, not connected)
+    showGuideStatus();
+    showFailure(tr("Hand guiding"), message);
   });
 }
 
@@ -162,6 +165,10 @@ void ForceGuidePanel::start() {
   xmate::arm::Arm* arm = session().arm();
   if (sensor == nullptr || arm == nullptr) {
     message_->showError(tr("Connect to a KUKA with its force sensor first."));
+    return;
+  }
+  if (guiding_ || session().live().motion_running) {
+    message_->showError(tr("Another motion is running: stop it first (Stop guiding, or Stop motion in the toolbar)."));
     return;
   }
   if (!session().live().force_reading) {
@@ -237,11 +244,14 @@ void ForceGuidePanel::showGuideStatus() {
 }
 
 void ForceGuidePanel::refresh(const LiveState& live) {
+  start_->setEnabled(!guiding_ && !live.motion_running);
   stop_->setEnabled(guiding_ && live.motion_running);
   showGuideStatus();
 }
 
 void ForceGuidePanel::sessionClosed() {
+  start_->setEnabled(false);
+  stop_->setEnabled(false);
   guiding_ = false;
   guide_.reset();
   showGuideStatus();

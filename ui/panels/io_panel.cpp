@@ -86,7 +86,7 @@ void IoPanel::rebuild(const std::vector<QString>& out_names, const std::vector<Q
   inputs_.clear();
   sent_.clear();
   pending_.assign(out_names.size(), 0);
-  const int columns = std::max<size_t>(out_names.size(), in_names.size()) > 6 ? 4 : 3;
+  const int columns = 3;  // "$OUT[12]" switches fit a narrow dock three abreast
   for (int c = 0; c < 4; ++c) {
     out_grid_->setColumnStretch(c, c < columns ? 1 : 0);
     in_grid_->setColumnStretch(c, c < columns ? 1 : 0);

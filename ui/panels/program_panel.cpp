@@ -193,7 +193,7 @@ QWidget* ProgramPanel::buildTeachGroup() {
   fillDiTrigger();
   di_trigger_->setToolTip(tr("Record a waypoint on each rising edge of this digital input (e.g. a button on the "
                              "tool)"));
-  record_state_ = new QLabel(tr("Hand-guide the arm (Drag panel), then record."), group);
+  record_state_ = new QLabel(tr("Guide the arm by hand (Drag or Hand guiding panel) or jog it, then record."), group);
   record_state_->setObjectName(QStringLiteral("program.recordState"));
   record_state_->setWordWrap(true);
   grid->addWidget(new QLabel(tr("Move type"), group), 0, 0);

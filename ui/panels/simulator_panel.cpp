@@ -355,7 +355,7 @@ void SimulatorPanel::updateAvailability() {
     g->setEnabled(kuka);
   }
   wrench_group_->setEnabled(xmate || kuka);
-  wrench_group_->setTitle(showing_kuka_ ? tr("Push at the flange (base frame; the force/torque sensor reads it)")
+  wrench_group_->setTitle(showing_kuka_ ? tr("Push at the flange (base frame)")
                                         : tr("External wrench at the TCP (base frame)"));
   const QString at = showing_kuka_ ? tr("the flange") : tr("the TCP");
   for (int i = 0; i < 6; ++i)

@@ -24,6 +24,8 @@
 #include "plots/plot_setup.h"
 
 class QCheckBox;
+class QHBoxLayout;
+class QResizeEvent;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -97,6 +99,9 @@ class PlotsWidget : public QWidget {
  signals:
   void frozenChanged(bool frozen);
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
   void buildUi();
   QWidget* buildJointChooser();
@@ -112,6 +117,9 @@ class PlotsWidget : public QWidget {
   void drawQuantity(Quantity quantity, const PlotBuffer& source, IndexRange range, double x0, double x1);
   void updateStatus();
   void updateFreezeControls();
+  // The view controls (window, freeze, export, status) beside the choosers where the width allows,
+  // else on a second row: the strip never forces the dock wider than the screen.
+  void placeViewControls();
   void askExport(ExportScope scope);
 
   PlotSetup setup_;
@@ -133,6 +141,11 @@ class PlotsWidget : public QWidget {
   std::array<QCheckBox*, kJointCount> joint_boxes_{};
   std::array<QCheckBox*, kSignalCount> signal_boxes_{};
   QLabel* joints_caption_ = nullptr;
+  QWidget* choosers_[2] = {nullptr, nullptr};  // joint and signal choosers
+  QWidget* view_box_ = nullptr;                // view controls + status
+  QHBoxLayout* first_row_ = nullptr;
+  QHBoxLayout* second_row_ = nullptr;
+  bool two_rows_ = false;
   QSplitter* splitter_ = nullptr;
   QSpinBox* window_box_ = nullptr;
   QPushButton* freeze_button_ = nullptr;

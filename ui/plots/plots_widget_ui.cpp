@@ -6,6 +6,7 @@
 #include <QFontMetrics>
 #include <QFrame>
 #include <QHBoxLayout>
+#include <QResizeEvent>
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
@@ -180,21 +181,29 @@ QHBoxLayout* stripLayout(QWidget* owner) {
 }  // namespace
 
 void PlotsWidget::buildUi() {
-  auto* controls = new QHBoxLayout;
-  controls->setSpacing(8);
-  controls->addWidget(buildJointChooser());
-  controls->addWidget(separator(this));
-  controls->addWidget(buildSignalChooser());
-  controls->addWidget(separator(this));
-  controls->addWidget(buildViewControls());
-  status_ = new QLabel(this);
+  first_row_ = new QHBoxLayout;
+  first_row_->setSpacing(8);
+  choosers_[0] = buildJointChooser();
+  choosers_[1] = buildSignalChooser();
+  first_row_->addWidget(choosers_[0]);
+  first_row_->addWidget(separator(this));
+  first_row_->addWidget(choosers_[1]);
+  first_row_->addWidget(separator(this));
+  view_box_ = new QWidget(this);
+  auto* view_row = new QHBoxLayout(view_box_);
+  view_row->setContentsMargins(0, 0, 0, 0);
+  view_row->setSpacing(8);
+  view_row->addWidget(buildViewControls());
+  status_ = new QLabel(view_box_);
   // Right-aligned in the room left; on two lines where the window is narrow, rather than widening the strip.
   status_->setWordWrap(true);
   status_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
   status_->setToolTip(tr("Session time of the newest sample shown (the right edge of the charts, 0 s on the "
                           "time axis), and the recorded time held in memory (the most recent %1 s are kept)")
                            .arg(kMaxWindowSeconds));
-  controls->addWidget(status_, 1);
+  view_row->addWidget(status_, 1);
+  first_row_->addWidget(view_box_, 1);
+  second_row_ = new QHBoxLayout;
 
   splitter_ = new QSplitter(Qt::Vertical, this);
   splitter_->setChildrenCollapsible(false);
@@ -208,8 +217,34 @@ void PlotsWidget::buildUi() {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(6, 4, 6, 4);
   layout->setSpacing(4);
-  layout->addLayout(controls);
+  layout->addLayout(first_row_);
+  layout->addLayout(second_row_);
   layout->addWidget(splitter_, 1);
+}
+
+void PlotsWidget::placeViewControls() {
+  if (!view_box_) return;
+  // The width the widget gets: its scroll area's viewport (or its dock) -- not its own width, which
+  // a scroll area stretches to the strip's minimum.
+  const int available = parentWidget() ? parentWidget()->width() : width();
+  const int one_row = choosers_[0]->sizeHint().width() + choosers_[1]->sizeHint().width() +
+                      view_box_->minimumSizeHint().width() + 60;  // separators, spacing, margins
+  const bool two = one_row > available;
+  if (two == two_rows_) return;
+  two_rows_ = two;
+  (two ? first_row_ : second_row_)->removeWidget(view_box_);
+  if (two) {
+    second_row_->addWidget(view_box_, 1);
+    first_row_->addStretch(1);  // the choosers keep their natural width, left-aligned
+  } else {
+    delete first_row_->takeAt(first_row_->count() - 1);  // that stretch
+    first_row_->addWidget(view_box_, 1);
+  }
+}
+
+void PlotsWidget::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  placeViewControls();
 }
 
 // The charts of the setup's signals, the bottom one shown carrying the time axis; the splitter's
@@ -270,6 +305,7 @@ void PlotsWidget::applySetup() {
   }
   updateCharts(true);
   applyVisibility();
+  placeViewControls();
 }
 
 QWidget* PlotsWidget::buildJointChooser() {
