@@ -4,6 +4,10 @@
 
 #include <cstdint>
 
+#include <QSettings>
+#include <QStandardPaths>
+#include <QString>
+
 #include "net/tcp_socket.h"
 #include "session/session.h"
 
@@ -25,6 +29,14 @@ inline SessionTarget kukaSimulator() {
   target.kind = SessionTarget::Kind::kKukaSimulator;
   target.kuka_model = QStringLiteral("kr6_r900_sixx");
   return target;
+}
+
+// Settings go to a private folder: never the user's, never another test's running in parallel.
+// Starts with none saved.
+inline void usePrivateSettings(const QString& folder) {
+  QStandardPaths::setTestModeEnabled(true);
+  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, folder);
+  QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")).clear();
 }
 
 // A TCP port nobody listens on (bound and released again).

@@ -99,11 +99,9 @@ class TestKukaWindow : public QObject {
 };
 
 void TestKukaWindow::initTestCase() {
-  QStandardPaths::setTestModeEnabled(true);
   QVERIFY(dir_.isValid());
   qputenv("XDG_STATE_HOME", dir_.filePath(QStringLiteral("state")).toUtf8());
-  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir_.filePath(QStringLiteral("config")));
-  QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")).clear();
+  test::usePrivateSettings(dir_.filePath(QStringLiteral("config")));
   session_ = new Session;
   window_ = new MainWindow(*session_);
   window_->resize(1600, 1000);

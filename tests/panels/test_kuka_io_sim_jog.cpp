@@ -75,10 +75,8 @@ class TestKukaIoSimJog : public QObject {
 };
 
 void TestKukaIoSimJog::initTestCase() {
-  QStandardPaths::setTestModeEnabled(true);
   QVERIFY(settings_dir_.isValid());
-  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings_dir_.path());
-  QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")).clear();
+  test::usePrivateSettings(settings_dir_.path());
   session_ = new Session;
   host_ = new QWidget;
   panels_ = createPanels(*session_, host_);

@@ -68,11 +68,8 @@ class TestKukaPanels : public QObject {
 };
 
 void TestKukaPanels::initTestCase() {
-  // Settings go to a private folder: never the user's, never another test's running in parallel.
-  QStandardPaths::setTestModeEnabled(true);
   QVERIFY(settings_dir_.isValid());
-  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings_dir_.path());
-  QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")).clear();
+  test::usePrivateSettings(settings_dir_.path());
   session_ = new Session;
   host_ = new QWidget;
   rsi_ = new RsiPanel(*session_, host_);

@@ -28,6 +28,7 @@
 #include "panels/tool_panel.h"
 #include "session/session.h"
 #include "window/parts.h"
+#include "gui_test_support.h"
 #include "window_driver.h"
 
 using namespace rci::ui;
@@ -127,11 +128,8 @@ class TestPanels : public QObject {
 };
 
 void TestPanels::initTestCase() {
-  // Settings go to a private folder: never the user's, never another test's running in parallel.
-  QStandardPaths::setTestModeEnabled(true);
   QVERIFY(settings_dir_.isValid());
-  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings_dir_.path());
-  QSettings(QStringLiteral("RCI Studio"), QStringLiteral("rci-studio")).clear();
+  test::usePrivateSettings(settings_dir_.path());
   session_ = new Session;
   host_ = new QWidget;
   panels_ = createPanels(*session_, host_);
