@@ -145,6 +145,20 @@ void TestArm::aKuka() {
   ArmState state;
   QVERIFY(arm.latest(state));
   QVERIFY2(std::abs(state.sample.gear_torque[1]) > 1, qPrintable(QString::number(state.sample.gear_torque[1])));
+  // The session as the samples taken show it (the window's status bar): running, at 4 ms.
+  std::vector<ArmSample> samples(4096);
+  QVERIFY(waitFor([&] {
+    arm.takeSamples(samples.data(), samples.size());
+    return arm.sessionStatus().phase == rsi::SessionPhase::kRunning && arm.sessionStatus().cycle_ms == 4;
+  }));
+  // Bounds of this session's reach: the start pose plus the context's +-90 deg, within the axis ranges.
+  std::array<double, 7> lower{}, upper{};
+  QVERIFY(arm.stream().reachableBounds(lower, upper));
+  rsi::StreamState s;
+  QVERIFY(arm.stream().state(s));
+  QVERIFY(std::abs(lower[0] - std::max(s.q_on[0] - 90 * kDeg, arm.spec().q_min[0])) < 1e-9);
+  QVERIFY(std::abs(upper[1] - std::min(s.q_on[1] + 90 * kDeg, arm.spec().q_max[1])) < 1e-9);
+  QCOMPARE(lower[6], 0.0);
   krc.stop();
   arm.stop();
 }
