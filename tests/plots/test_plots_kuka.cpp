@@ -34,7 +34,8 @@ const xmate::model::RobotSpec& kr6() {
 }
 
 PlotSetup fullKuka(double cycle_s = 0.004) {
-  return armSetup(kr6(), Capability::kGearTorques | Capability::kMotorCurrents, cycle_s, true, true);
+  return armSetup(kr6(), Capability::kGearTorques | Capability::kMotorCurrents | Capability::kTcpSetPoint, cycle_s,
+                  true, true);
 }
 
 PlotSetup bareKuka() { return armSetup(kr6(), 0, 0.004, false, false); }
@@ -54,6 +55,8 @@ ArmSample cycleSample(uint64_t k, double cycle_s = 0.004, uint32_t session = 1) 
     s.gear_torque[size_t(j)] = j + 1;
     s.motor_current[size_t(j)] = 0.5 * (j + 1);
   }
+  s.tcp_position = {0.4 + 0.1 * t, 0.2, 0.6};
+  s.tcp_position_command = {0.41 + 0.1 * t, 0.2, 0.6};
   return s;
 }
 
@@ -150,7 +153,10 @@ void TestPlotsKuka::setupFollowsCapabilities() {
   QVERIFY(!full.offers(Signal::kTorqueMeasured));
   QVERIFY(!full.offers(Signal::kPositionMeasured));
   const PlotSetup bare = bareKuka();
-  QCOMPARE(bare.offered, (std::vector<Signal>{Signal::kAxisActual, Signal::kAxisSetPoint, Signal::kAxisVelocity}));
+  // Every arm reports its TCP; the set-point only with kTcpSetPoint.
+  QCOMPARE(bare.offered, (std::vector<Signal>{Signal::kAxisActual, Signal::kAxisSetPoint, Signal::kAxisVelocity,
+                                              Signal::kTcpActual}));
+  QVERIFY(full.offers(Signal::kTcpSetPoint));
   QVERIFY(std::abs(armSetup(kr6(), 0, 0.012, false, false).sample_rate_hz - 83.333) < 0.001);
 }
 
@@ -329,13 +335,16 @@ void TestPlotsKuka::csvNamesKukaColumns() {
                              axisColumns("dq", "rad_per_s") + axisColumns("tau_gear", "Nm") +
                              axisColumns("current", "A") +
                              QStringList{"ft_Fx_N", "ft_Fy_N", "ft_Fz_N", "ft_Tx_Nm", "ft_Ty_Nm", "ft_Tz_Nm",
-                                         "rsi_late_answers"};
+                                         "rsi_late_answers", "tcp_X_m", "tcp_Y_m", "tcp_Z_m", "tcp_set_X_m",
+                                         "tcp_set_Y_m", "tcp_set_Z_m"};
   QCOMPARE(lines[0], joined(header));
   QCOMPARE(lines.size(), 3 + 2);  // header, 3 rows, trailing empty piece
   const QList<QByteArray> first = lines[1].split(',');
   QCOMPARE(first.size(), header.size());
   QCOMPARE(first[0].toDouble(), cycleSample(1).time);
   QCOMPARE(first[1 + 12], QByteArray());  // the first velocity is not known: an empty field
+  QCOMPARE(first[header.indexOf("tcp_X_m")].toDouble(), cycleSample(1).tcp_position[0]);
+  QCOMPARE(first[header.indexOf("tcp_set_X_m")].toDouble(), cycleSample(1).tcp_position_command[0]);
   const QList<QByteArray> second = lines[2].split(',');
   QVERIFY(std::abs(second[1 + 12].toDouble() - 0.1) < 1e-9);  // dq A1
   QCOMPARE(second[1 + 18 + 5].toDouble(), 6.0);                // tau_gear A6
@@ -343,14 +352,14 @@ void TestPlotsKuka::csvNamesKukaColumns() {
   QCOMPARE(second[1 + 30 + 2].toDouble(), 3.0);                // Fz
   QCOMPARE(second[1 + 36].toDouble(), 3.0);                    // late answers
 
-  // An arm without gear torques, currents, sensor or RSI count: only its own columns.
+  // An arm without gear torques, currents, sensor, RSI count or TCP set-point: only its own columns.
   PlotsWidget bare;
   bare.configure(bareKuka());
   feed(bare, cycles(1, 2));
   QVERIFY2(bare.exportCsv(path, PlotsWidget::ExportScope::kWholeBuffer, &error), qPrintable(error));
   QCOMPARE(csvLines(path)[0],
            joined(QStringList{"time_s"} + axisColumns("q", "rad") + axisColumns("q_set", "rad") +
-                  axisColumns("dq", "rad_per_s")));
+                  axisColumns("dq", "rad_per_s") + QStringList{"tcp_X_m", "tcp_Y_m", "tcp_Z_m"}));
 }
 
 void TestPlotsKuka::frozenViewExportHasShownKukaSeries() {

@@ -35,6 +35,8 @@ void ArmChannels::map(const xmate::arm::ArmSample& s, const ArmExtras& extras, C
     const auto k = static_cast<std::size_t>(i);
     put(out, Signal::kSensorForce, i, extras.force_valid ? extras.force[k] : kNaN);
     put(out, Signal::kSensorTorque, i, extras.force_valid ? extras.force[k + 3] : kNaN);
+    put(out, Signal::kTcpActual, i, s.tcp_position[k]);
+    put(out, Signal::kTcpSetPoint, i, s.tcp_position_command[k]);
   }
   put(out, Signal::kLateAnswers, 0, extras.late_answers);
   has_previous_ = true;

@@ -38,6 +38,8 @@ PlotSetup armSetup(const xmate::model::RobotSpec& spec, xmate::arm::Capabilities
     setup.offered.push_back(Signal::kSensorTorque);
   }
   if (late_answers) setup.offered.push_back(Signal::kLateAnswers);
+  setup.offered.push_back(Signal::kTcpActual);  // its chart appears when ticked
+  if (xmate::arm::has(capabilities, Capability::kTcpSetPoint)) setup.offered.push_back(Signal::kTcpSetPoint);
   setup.joints = std::clamp(spec.dof, 1, kJointCount);
   if (spec.family == xmate::model::RobotFamily::kKuka) {  // KUKA's own names for its axes
     setup.joint_prefix = QStringLiteral("A");

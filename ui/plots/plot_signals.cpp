@@ -16,6 +16,8 @@ Quantity quantityOf(Signal signal) {
     case Signal::kSensorForce:
     case Signal::kSensorTorque: return Quantity::kForce;
     case Signal::kLateAnswers: return Quantity::kDelay;
+    case Signal::kTcpActual:
+    case Signal::kTcpSetPoint: return Quantity::kTcp;
     default: return Quantity::kTorque;
   }
 }
@@ -27,6 +29,7 @@ QString quantityTitle(Quantity quantity) {
     case Quantity::kMotorCurrent: return QStringLiteral("Motor current");
     case Quantity::kForce: return QStringLiteral("Force sensor");
     case Quantity::kDelay: return QStringLiteral("Late answers");
+    case Quantity::kTcp: return QStringLiteral("TCP position");
     default: return QStringLiteral("Joint torque");
   }
 }
@@ -38,6 +41,7 @@ QString quantityUnit(Quantity quantity) {
     case Quantity::kMotorCurrent: return QStringLiteral("A");
     case Quantity::kForce: return QStringLiteral("N, Nm");
     case Quantity::kDelay: return QStringLiteral("count");
+    case Quantity::kTcp: return QStringLiteral("m");
     default: return QStringLiteral("Nm");
   }
 }
@@ -51,7 +55,9 @@ QString signalLabel(Signal signal) {
     case Signal::kTorqueExternal: return QStringLiteral("external");
     case Signal::kAxisActual:
     case Signal::kAxisVelocity: return QStringLiteral("actual");
-    case Signal::kAxisSetPoint: return QStringLiteral("set-point");
+    case Signal::kAxisSetPoint:
+    case Signal::kTcpSetPoint: return QStringLiteral("set-point");
+    case Signal::kTcpActual: return QStringLiteral("actual");
     case Signal::kGearTorque: return QStringLiteral("gear");
     case Signal::kMotorCurrent: return QStringLiteral("motor");
     case Signal::kSensorForce: return QStringLiteral("force");
@@ -76,6 +82,8 @@ QString signalKey(Signal signal) {
     case Signal::kMotorCurrent: return QStringLiteral("current");
     case Signal::kSensorForce:
     case Signal::kSensorTorque: return QStringLiteral("ft");
+    case Signal::kTcpActual: return QStringLiteral("tcp");
+    case Signal::kTcpSetPoint: return QStringLiteral("tcp_set");
     default: return QStringLiteral("rsi_late_answers");
   }
 }
@@ -90,7 +98,8 @@ QString signalUnit(Signal signal) {
 }
 
 bool isJointSignal(Signal signal) {
-  return signal != Signal::kSensorForce && signal != Signal::kSensorTorque && signal != Signal::kLateAnswers;
+  return signal != Signal::kSensorForce && signal != Signal::kSensorTorque && signal != Signal::kLateAnswers &&
+         signal != Signal::kTcpActual && signal != Signal::kTcpSetPoint;
 }
 
 int componentCount(Signal signal) {
@@ -104,6 +113,8 @@ QString componentName(Signal signal, int component) {
   switch (signal) {
     case Signal::kSensorForce: return QStringLiteral("F") + QLatin1Char(axes[component]);
     case Signal::kSensorTorque: return QStringLiteral("T") + QLatin1Char(axes[component]);
+    case Signal::kTcpActual:
+    case Signal::kTcpSetPoint: return QString(QLatin1Char(axes[component])).toUpper();
     default: return QString();
   }
 }

@@ -45,7 +45,8 @@ Qt::PenStyle penStyle(Signal signal) {
     case Signal::kPositionCommanded:
     case Signal::kTorqueCommanded:
     case Signal::kAxisSetPoint:
-    case Signal::kSensorTorque: return Qt::DashLine;
+    case Signal::kSensorTorque:
+    case Signal::kTcpSetPoint: return Qt::DashLine;
     case Signal::kTorqueExternal: return Qt::DotLine;
     default: return Qt::SolidLine;
   }
@@ -71,6 +72,7 @@ QString axisTitle(Quantity quantity) {
     case Quantity::kMotorCurrent: return QStringLiteral("I [A]");
     case Quantity::kForce: return QStringLiteral("F,T [N,Nm]");  // both ticked
     case Quantity::kDelay: return QStringLiteral("late");
+    case Quantity::kTcp: return QStringLiteral("TCP [m]");
     default: return QStringLiteral("τ [Nm]");
   }
 }
@@ -91,6 +93,8 @@ QString signalShortName(Signal signal) {
     case Signal::kMotorCurrent: return QStringLiteral("I motor");
     case Signal::kSensorForce: return QStringLiteral("F sensor");
     case Signal::kSensorTorque: return QStringLiteral("T sensor");
+    case Signal::kTcpActual: return QStringLiteral("TCP");
+    case Signal::kTcpSetPoint: return QStringLiteral("TCP set");
     default: return QStringLiteral("late");
   }
 }
@@ -121,6 +125,12 @@ QString signalToolTip(Signal signal) {
     case Signal::kSensorTorque:
       return QObject::tr("Torque the F/T sensor measures (Nm), in its own frame: Tx red, Ty green, Tz blue, drawn %1")
           .arg(drawn);
+    case Signal::kTcpActual:
+      return QObject::tr("Position of the TCP (m) in the robot's base frame, as the robot reports it: X red, Y green, "
+                         "Z blue, drawn %1").arg(drawn);
+    case Signal::kTcpSetPoint:
+      return QObject::tr("Where the robot controller takes the TCP (m, base frame): X red, Y green, Z blue, drawn %1")
+          .arg(drawn);
     case Signal::kLateAnswers:
       return QObject::tr("Late answers the robot has counted (its Delay): it grows when this PC answers a cycle too "
                          "late, and RSI stops when it reaches the limit of the RSI context");
@@ -138,6 +148,8 @@ QString chartToolTip(Quantity quantity, const QString& joints_caption) {
                          "y green, z blue");
     case Quantity::kDelay:
       return QObject::tr("Late answers the robot has counted in this RSI session (its Delay)");
+    case Quantity::kTcp:
+      return QObject::tr("TCP position (m) in the base frame: actual solid, set-point dashed; X red, Y green, Z blue");
     default:
       return QObject::tr("%1 (%2) of the %3 ticked under %4; line style as under Signals")
           .arg(quantityTitle(quantity), quantityUnit(quantity), joints_caption.toLower(), joints_caption);

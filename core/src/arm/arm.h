@@ -26,6 +26,7 @@ enum class Capability : uint32_t {
   kCorrectionLimits = 1u << 6,  // motions stay within limits around where the session started (RSI)
   kControllerSafety = 1u << 7,  // settings on the controller: collision thresholds, safety box, soft limits, filters, tool, impedance
   kDigitalIo = 1u << 8,         // digital inputs and outputs reachable from the PC
+  kTcpSetPoint = 1u << 9,       // the commanded TCP (or flange) position in every sample (RSI's DEF_RSol sent)
 };
 using Capabilities = uint32_t;
 constexpr Capabilities operator|(Capability a, Capability b) { return uint32_t(a) | uint32_t(b); }
@@ -44,6 +45,7 @@ struct ArmSample {
   std::array<double, 7> gear_torque{};   // Capability::kGearTorques, Nm
   std::array<double, 6> wrench{};        // Capability::kExternalWrench: at the TCP, base frame, N and Nm
   std::array<double, 3> tcp_position{};  // measured TCP (or flange) in the base frame, m
+  std::array<double, 3> tcp_position_command{};  // Capability::kTcpSetPoint: where the controller takes it, m
 };
 
 // The newest state: a sample and the whole TCP pose.

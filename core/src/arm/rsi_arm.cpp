@@ -71,7 +71,7 @@ RsiArm::RsiArm(const RsiArmConfig& config) : context_(rsi::readContext(config.co
 
   static const char* const kAxes[6] = {"A1", "A2", "A3", "A4", "A5", "A6"};
   static const char* const kPose[6] = {"X", "Y", "Z", "A", "B", "C"};
-  bool currents = true, gears = true;
+  bool currents = true, gears = true, set_points = true;
   for (int i = 0; i < 6; ++i) {
     slots_.q[size_t(i)] = link_->slot("AIPos", kAxes[i]);
     slots_.q_set[size_t(i)] = link_->slot("ASPos", kAxes[i]);
@@ -79,6 +79,8 @@ RsiArm::RsiArm(const RsiArmConfig& config) : context_(rsi::readContext(config.co
     slots_.current[size_t(i)] = link_->slot("MACur", kAxes[i]);
     slots_.gear[size_t(i)] = gearTorqueSlot(context_, config_, *link_, i + 1);
     slots_.pose[size_t(i)] = link_->slot("RIst", kPose[i]);
+    slots_.pose_set[size_t(i)] = link_->slot("RSol", kPose[i]);
+    set_points = set_points && slots_.pose_set[size_t(i)] >= 0;
     currents = currents && slots_.current[size_t(i)] >= 0;
     gears = gears && slots_.gear[size_t(i)] >= 0;
   }
@@ -86,6 +88,7 @@ RsiArm::RsiArm(const RsiArmConfig& config) : context_(rsi::readContext(config.co
   if (currents) capabilities_ = capabilities_ | Capability::kMotorCurrents;
   if (gears) capabilities_ = capabilities_ | Capability::kGearTorques;
   if (io_) capabilities_ = capabilities_ | Capability::kDigitalIo;
+  if (set_points) capabilities_ = capabilities_ | Capability::kTcpSetPoint;
   epoch_ns_ = net::monotonicNs();
 }
 
@@ -101,7 +104,10 @@ void RsiArm::fill(const double* values, size_t count, ArmSample& s, std::array<d
     s.motor_current[i] = valueAt(values, count, slots_.current[i]);
     s.gear_torque[i] = valueAt(values, count, slots_.gear[i]);
   }
-  for (size_t i = 0; i < 3; ++i) s.tcp_position[i] = valueAt(values, count, slots_.pose[i]) * 1e-3;
+  for (size_t i = 0; i < 3; ++i) {
+    s.tcp_position[i] = valueAt(values, count, slots_.pose[i]) * 1e-3;
+    s.tcp_position_command[i] = valueAt(values, count, slots_.pose_set[i]) * 1e-3;
+  }
   if (pose_mm_deg)
     for (size_t i = 0; i < 6; ++i) (*pose_mm_deg)[i] = valueAt(values, count, slots_.pose[i]);
 }

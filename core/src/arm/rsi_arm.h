@@ -64,7 +64,7 @@ class RsiArm : public Arm {
 
  private:
   struct Slots {  // decoder slots of the values an ArmSample carries (-1: not sent)
-    std::array<int, 6> q{}, q_set{}, current{}, gear{}, pose{};
+    std::array<int, 6> q{}, q_set{}, current{}, gear{}, pose{}, pose_set{};
   };
   void fill(const double* values, size_t count, ArmSample& s, std::array<double, 6>* pose_mm_deg) const;
 
