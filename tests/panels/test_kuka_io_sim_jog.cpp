@@ -16,6 +16,7 @@
 #include <QTest>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -61,6 +62,7 @@ class TestKukaIoSimJog : public QObject {
   Session* session_ = nullptr;
   QWidget* host_ = nullptr;
   std::vector<PanelSpec> panels_;
+  void holdCartesian(const QString& button, int ms);
 
  private slots:
   void initTestCase();
@@ -70,6 +72,7 @@ class TestKukaIoSimJog : public QObject {
   void simulatedInputLightsLamp();
   void pushSetsWrench();
   void jointJogStopsAtCorrectionLimit();
+  void cartesianJogMovesTheFlange();
   void correctionLimitsNarrowJogLimits();
   void stopAnsweringStopsAndRestartsRsi();
 };
@@ -117,11 +120,11 @@ void TestKukaIoSimJog::panelsApply() {
   QCOMPARE(find<QCheckBox>(QStringLiteral("sim.in1"))->text(), QStringLiteral("$IN[2]"));
   const QString help = find<QLabel>(QStringLiteral("sim.fault.help"))->text();
   QVERIFY2(help.contains(QStringLiteral("101 missing answers")), qPrintable(help));
-  // Jog: six axes named A1..A6; the TCP jog is not offered on this arm.
+  // Jog: six axes named A1..A6; the TCP jog moves the flange (its group says how).
   QVERIFY(find<QPushButton>(QStringLiteral("jog.joint6.plus"))->isVisibleTo(host_));
   QVERIFY(!find<QPushButton>(QStringLiteral("jog.joint7.plus"))->isVisibleTo(host_));
   QCOMPARE(find<QPushButton>(QStringLiteral("jog.joint1.plus"))->toolTip(), QStringLiteral("A1 +"));
-  QVERIFY(!find<QPushButton>(QStringLiteral("jog.cart.x.plus"))->isEnabled());
+  QVERIFY(find<QPushButton>(QStringLiteral("jog.cart.x.plus"))->isEnabled());
   QVERIFY(!find<QGroupBox>(QStringLiteral("jog.cart"))->toolTip().isEmpty());
 }
 
@@ -230,6 +233,48 @@ void TestKukaIoSimJog::jointJogStopsAtCorrectionLimit() {
   QCOMPARE(s.session, rsi_session);
   QCOMPARE(int(krc().status().last_stop), int(xmate::sim::KrcStop::kNone));
   QTRY_VERIFY_WITH_TIMEOUT(statusText(QStringLiteral("jog")).contains(QStringLiteral("done")), kWaitMs);
+}
+
+// Holds a TCP jog button for `ms`, releases it and waits until the jog has braked and ended.
+void TestKukaIoSimJog::holdCartesian(const QString& button, int ms) {
+  auto* b = find<QPushButton>(button);
+  QVERIFY(b && b->isEnabled());
+  QSignalSpy finished(session_, &Session::motionFinished);
+  QTest::mousePress(b, Qt::LeftButton);
+  QTest::qWait(ms);
+  QTest::mouseRelease(b, Qt::LeftButton);
+  QVERIFY(QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs));
+  QVERIFY2(finished.first().at(1).toBool(), qPrintable(finished.first().at(2).toString()));
+  QTRY_VERIFY_WITH_TIMEOUT(!session_->live().motion_running, kWaitMs);
+  QTest::qWait(100);  // the newest state after the last command
+}
+
+// On a KUKA the TCP buttons move the flange along / about a base axis through the joints: +z lifts
+// it and keeps its orientation; rz+ turns it and keeps its position.
+void TestKukaIoSimJog::cartesianJogMovesTheFlange() {
+  waitRunning();
+  QTRY_VERIFY_WITH_TIMEOUT(!session_->live().motion_running, kWaitMs);
+  find<QSlider>(QStringLiteral("jog.speed"))->setValue(40);
+  auto pose = [this] { return session_->live().arm.tcp; };
+  auto angle = [](const std::array<double, 16>& a, const std::array<double, 16>& b) {
+    double trace = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) trace += a[size_t(4 * k + i)] * b[size_t(4 * k + i)];
+    return std::acos(std::clamp((trace - 1) / 2, -1.0, 1.0));
+  };
+  std::array<double, 16> start = pose();
+  holdCartesian(QStringLiteral("jog.cart.z.plus"), 600);
+  std::array<double, 16> end = pose();
+  QVERIFY2(end[11] - start[11] > 0.01, qPrintable(QString::number(end[11] - start[11])));
+  QVERIFY2(std::hypot(end[3] - start[3], end[7] - start[7]) < 0.003,
+           qPrintable(QString::number(std::hypot(end[3] - start[3], end[7] - start[7]))));
+  QVERIFY2(angle(start, end) < 0.01, qPrintable(QString::number(angle(start, end))));
+  start = end;
+  holdCartesian(QStringLiteral("jog.cart.rz.plus"), 600);
+  end = pose();
+  QVERIFY2(angle(start, end) > 0.03, qPrintable(QString::number(angle(start, end))));
+  QVERIFY2(std::hypot(end[3] - start[3], end[7] - start[7], end[11] - start[11]) < 0.003,
+           qPrintable(QString::number(std::hypot(end[3] - start[3], end[7] - start[7], end[11] - start[11]))));
 }
 
 void TestKukaIoSimJog::correctionLimitsNarrowJogLimits() {

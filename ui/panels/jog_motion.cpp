@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include "net/clock.h"
+
 namespace rci::ui {
 namespace {
 
@@ -158,6 +160,45 @@ xmate::CartesianPose CartesianJog::next(const RCI::robot::RobotState& state) {
   command.psi_valid = false;  // keep the arm angle
   if (!go && ramp_.atRest()) return xmate::MotionFinished(command);
   return command;
+}
+
+xmate::guide::GuideParameters cartesianJogParameters(int axis, double speed_fraction) {
+  xmate::guide::GuideParameters p;
+  const bool translation = axis < 3;
+  p.axes = translation ? xmate::guide::GuideAxes::kTranslation : xmate::guide::GuideAxes::kRotation;
+  p.force_dead_band = 0;  // the push is exact: nothing to ignore
+  p.torque_dead_band = 0;
+  p.max_speed = std::max(1e-3, kJogTranslationSpeed * speed_fraction);
+  p.max_angular_speed = std::max(1e-3, kJogRotationSpeed * speed_fraction);
+  // The push settles at the capped speed; mass / inertia give about the jog's acceleration.
+  p.mass = p.damping * p.max_speed * 1.5 / kJogTranslationAccel;
+  p.inertia = p.rotational_damping * p.max_angular_speed * 1.5 / kJogRotationAccel;
+  p.braking = translation ? kJogTranslationAccel : kJogRotationAccel;
+  return p;
+}
+
+JogPush::JogPush(const xmate::arm::Arm& arm, int axis, int direction, const xmate::guide::GuideParameters& parameters)
+    : arm_(arm), axis_(axis) {
+  // 1.5 times what the damping needs at the top speed: the guide's cap holds the speed there.
+  const double push = axis < 3 ? parameters.damping * parameters.max_speed * 1.5
+                               : parameters.rotational_damping * parameters.max_angular_speed * 1.5;
+  push_ = direction < 0 ? -push : push;
+}
+
+bool JogPush::read(std::array<double, 6>& wrench, int64_t& received_ns) const {
+  received_ns = xmate::net::monotonicNs();  // always fresh: the guide never sees it silent
+  wrench = {};
+  if (!biased_) {
+    biased_ = true;
+    return true;
+  }
+  xmate::arm::ArmState state;
+  if (!arm_.latest(state)) return true;
+  // Base axis k in the flange frame: row k of R (R^T e_k), R the flange's rotation (row-major 4x4).
+  const size_t k = size_t(axis_ % 3);
+  const size_t offset = axis_ < 3 ? 0 : 3;
+  for (size_t i = 0; i < 3; ++i) wrench[offset + i] = push_ * state.tcp[4 * k + i];
+  return true;
 }
 
 }  // namespace rci::ui

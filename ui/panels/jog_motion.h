@@ -17,6 +17,7 @@
 #include <xmate/types.h>
 
 #include "arm/arm.h"
+#include "guide/admittance.h"
 #include "model/robot_spec.h"
 #include "panels/jog_ramp.h"
 #include "rsi/joint_stream.h"
@@ -125,5 +126,27 @@ class CartesianJog {
   std::array<double, 16> start_{};
   double travelled_ = 0;  // m or rad along the axis
 };
+
+// Cartesian jog of an arm without Cartesian control of its own (a KUKA over RSI): a push along (or a
+// twist about) one base axis at the flange, handed to guide::AdmittanceGuide as its wrench, so the
+// flange moves at the jog speed within the joint bounds and holds at the edge of the reach as hand
+// guiding does; on release the guide brakes to rest and ends. The push is zero at the guide's first
+// reading (its bias) and turned into the flange frame at the arm's newest pose. read(): the arm's
+// real-time thread, lock-free.
+class JogPush : public xmate::guide::WrenchSource {
+ public:
+  JogPush(const xmate::arm::Arm& arm, int axis, int direction, const xmate::guide::GuideParameters& parameters);
+  bool read(std::array<double, 6>& wrench, int64_t& received_ns) const override;
+
+ private:
+  const xmate::arm::Arm& arm_;
+  int axis_;
+  double push_;                 // N (axes 0..2) or Nm (3..5), signed
+  mutable bool biased_ = false;  // the first reading was handed out (zero)
+};
+
+// The guide's settings for a Cartesian jog along / about `axis` (0..5) at `speed_fraction` of the
+// jog speeds (kJogTranslationSpeed, kJogRotationSpeed) and accelerations.
+xmate::guide::GuideParameters cartesianJogParameters(int axis, double speed_fraction);
 
 }  // namespace rci::ui

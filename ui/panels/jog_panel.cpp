@@ -14,6 +14,7 @@
 
 #include "arm/rsi_arm.h"
 #include "panels/fields.h"
+#include "model/arm_kinematics.h"
 #include "panels/jog_motion.h"
 #include "session/session.h"
 
@@ -38,6 +39,25 @@ void watchStop(JogFlags& flags, const MotionToken& token) {
     flags.window_silent.store(true, std::memory_order_relaxed);
   }
 }
+
+// The Cartesian jog of an arm: the admittance guide pushed by JogPush, told to brake and end when the
+// button is released, a stop is asked for or the window falls silent (watch sets the flags).
+class CartesianArmJog : public xmate::arm::JointMotion {
+ public:
+  CartesianArmJog(xmate::guide::AdmittanceGuide& guide, const JogFlags& flags, std::function<void()> watch)
+      : guide_(guide), flags_(flags), watch_(std::move(watch)) {}
+  bool command(const xmate::arm::ArmSample& now, std::array<double, 7>& q) override {
+    watch_();
+    if (!flags_.held.load(std::memory_order_relaxed) || flags_.stop.load(std::memory_order_relaxed))
+      guide_.requestStop();
+    return guide_.command(now, q);
+  }
+
+ private:
+  xmate::guide::AdmittanceGuide& guide_;
+  const JogFlags& flags_;
+  std::function<void()> watch_;
+};
 
 const char* const kWindowSilent =
     "the jog stopped because the window did not respond for more than 150 ms (it could not have seen the button's "
@@ -155,8 +175,6 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
   if (!isOpen()) return;
   xmate::arm::Arm* arm = session().arm();
   if (!arm) return;
-  // The Cartesian jog needs the xMate's Cartesian control (its group is disabled otherwise).
-  if (cartesian && !session().robot()) return;
   if (active_) active_->held.store(false);  // a press without release (focus lost): end that jog
   auto flags = std::make_shared<JogFlags>();
   active_ = flags;
@@ -168,7 +186,7 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
   const QString label = title() + QStringLiteral(": ") + what;
   showStatus(tr("jog %1 ...").arg(what), false);
   if (!session().robot()) {
-    pressArm(axis, direction, label, limits, speed);
+    pressArm(cartesian, axis, direction, label, limits, speed);
     return;
   }
   // The job runs on the session's motion worker; the callbacks on the client's real-time thread.
@@ -196,7 +214,8 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
   });
 }
 
-void JogPanel::pressArm(int axis, int direction, const QString& label, const JointLimitsRad& limits, double speed) {
+void JogPanel::pressArm(bool cartesian, int axis, int direction, const QString& label, const JointLimitsRad& limits,
+                        double speed) {
   std::shared_ptr<JogFlags> flags = active_;
   const auto& model = spec();
   // Valid while the job runs: the session keeps its link until the motion worker has ended.
@@ -215,6 +234,16 @@ void JogPanel::pressArm(int axis, int direction, const QString& label, const Joi
       rsi_session = s.session;
     }
     std::function<void()> stop_watch = [flags, &token] { watchStop(*flags, token); };
+    if (cartesian) {
+      const xmate::guide::GuideParameters parameters = cartesianJogParameters(axis, speed);
+      const JogPush push(arm, axis, direction, parameters);
+      xmate::guide::AdmittanceGuide guide(xmate::model::ArmKinematics(model), push, arm.cycleSeconds(), parameters);
+      guide.setJointBounds(within.lower, within.upper);
+      CartesianArmJog motion(guide, *flags, stop_watch);
+      arm.runJointMotion(motion);
+      if (flags->window_silent.load()) throw std::runtime_error(kWindowSilent);
+      return;
+    }
     JointJog jog(model, axis, direction, speed, within, *flags, arm.cycleSeconds());
     JointJogMotion motion(jog, stop_watch, rsi_session);
     arm.runJointMotion(motion);
@@ -255,12 +284,11 @@ void JogPanel::showModel() {
 
 void JogPanel::sessionOpened() {
   showModel();
-  // The Cartesian jog streams poses to the xMate's Cartesian control; other arms jog their axes.
-  const bool cartesian = session().robot() != nullptr;
-  cartesian_group_->setEnabled(cartesian);
-  cartesian_group_->setToolTip(cartesian ? QString()
-                                         : tr("Jogging the TCP works on an xMate only; on this robot jog the axes "
-                                              "one at a time above."));
+  // The Cartesian jog streams poses to the xMate's Cartesian control; on other arms it moves the
+  // flange (there is no tool on a KUKA over RSI) through the joints.
+  cartesian_group_->setToolTip(session().robot() ? QString()
+                                                 : tr("Moves the flange along or about a base axis; it holds where an "
+                                                      "axis reaches the range RSI allows or the arm its reach."));
   const xmate::arm::Capabilities caps = session().arm() ? session().arm()->capabilities() : 0;
   QString hint = tr("Hold a button to move; release to stop.");
   if (xmate::arm::has(caps, xmate::arm::Capability::kPowerControl)) hint += tr(" Motors must be on.");

@@ -42,7 +42,10 @@ class JogPanel : public PanelBase {
                              int direction, QWidget* parent);
   void press(bool cartesian, int axis, int direction, const QString& what);
   // The joint jog on the session's arm::Arm (runArmMotion).
-  void pressArm(int axis, int direction, const QString& label, const JointLimitsRad& limits, double speed);
+  // A jog on an arm::Arm (a KUKA): an axis (JointJog) or the flange along / about a base axis (JogPush
+  // through the admittance guide), within the RSI correction limits.
+  void pressArm(bool cartesian, int axis, int direction, const QString& label, const JointLimitsRad& limits,
+                double speed);
   void release();
   void showModel();
   double speedFraction() const;
