@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Program panel: running the program with the teach executor through Session::runMotion -- run,
+// Program panel: running the program with the teach executor through Session::runArmMotion -- run,
 // step, pause, resume, stop, go to a waypoint, the progress display, the pre-flight problems and
 // the 3D view's program overlay (waypoints and planned path).
 #include <QBrush>
@@ -18,7 +18,7 @@
 
 #include <xmate/model.h>
 
-#include "arm/rsi_arm.h"
+#include "arm/arm.h"
 #include "model/arm_kinematics.h"
 #include "panels/fields.h"
 #include "panels/lamp.h"
@@ -104,18 +104,10 @@ void ProgramPanel::startRun(const xmate::teach::Program& program, bool single_st
   updateButtons();
   std::shared_ptr<RunSlot> slot = run_slot_;
   // The executor drives an xMate through its vendor API and a KUKA through its RSI arm.
-  if (xmate::arm::RsiArm* rsi = session().rsiArm()) {
-    session().runArmMotion(run_label_, [slot, program, options, rsi](xmate::arm::Arm&, const MotionToken& token) {
-      xmate::teach::ExecutorOptions with_token = options;
-      with_token.stop_token = &token.stopFlag();  // Stop, disconnect and quit end the run
-      slot->report = slot->executor.run(*rsi, program, with_token);
-    });
-    return;
-  }
-  session().runMotion(run_label_, [slot, program, options](xmate::Robot& robot, const MotionToken& token) {
+  session().runArmMotion(run_label_, [slot, program, options](xmate::arm::Arm& arm, const MotionToken& token) {
     xmate::teach::ExecutorOptions with_token = options;
     with_token.stop_token = &token.stopFlag();  // Stop, disconnect and quit end the run
-    slot->report = slot->executor.run(robot, program, with_token);
+    slot->report = slot->executor.run(arm, program, with_token);
   });
 }
 
@@ -160,7 +152,7 @@ std::array<double, 7> ProgramPanel::currentQ() const {
 }
 
 void ProgramPanel::commandDone(const QString& action, bool ok, const QString&) {
-  // runMotion refuses (e.g. another motion runs) with commandFinished and no motionFinished.
+  // runArmMotion refuses (e.g. another motion runs) with commandFinished and no motionFinished.
   if (!ok && running_ && title() + QStringLiteral(": ") + action == run_label_) {
     running_ = false;
     run_label_.clear();

@@ -22,6 +22,7 @@
 #include "teach/time_scaling.h"
 
 namespace xmate::arm {
+class Arm;
 class RsiArm;
 }
 namespace xmate::rsi {
@@ -118,6 +119,9 @@ class Executor {
   // wires to the PC (none wired: the program fails at the first of them, saying so). The options'
   // soft limits and box apply to the pre-flight.
   RunReport run(arm::RsiArm& arm, const Program& program, const ExecutorOptions& options = {});
+  // Either of the above for an arm of either family (arm::RciArm: its xmate::Robot; arm::RsiArm),
+  // for callers that hold an arm::Arm (the window). std::invalid_argument for another kind of arm.
+  RunReport run(arm::Arm& arm, const Program& program, const ExecutorOptions& options = {});
 
   // ---- Thread-safe controls (any thread, any time; no effect when not running) ----------------
   void pause();                       // smooth stop on the path; holds until resume()/stop()

@@ -15,6 +15,7 @@
 
 #include "client/move_check.h"
 #include "planning/joint_line.h"
+#include "arm/rci_arm.h"
 #include "arm/rsi_arm.h"
 #include "rsi/digital_io.h"
 #include "rsi/joint_stream.h"
@@ -110,6 +111,12 @@ double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6
 RunReport Executor::run(arm::RsiArm& arm, const Program& program, const ExecutorOptions& options) {
   RsiPort port(arm.stream(), arm.digitalIo(), program.has_tool ? program.tool : kIdentityPose);
   return runOn(port, nullptr, &arm.stream(), program, options);
+}
+
+RunReport Executor::run(arm::Arm& arm, const Program& program, const ExecutorOptions& options) {
+  if (auto* rsi = dynamic_cast<arm::RsiArm*>(&arm)) return run(*rsi, program, options);
+  if (auto* rci = dynamic_cast<arm::RciArm*>(&arm)) return run(rci->robot(), program, options);
+  throw std::invalid_argument("teach::Executor::run: an arm of neither family the executor drives (RciArm, RsiArm)");
 }
 
 void Executor::runRsiMotion(const Program& program, size_t index, InstructionReport& report) {
