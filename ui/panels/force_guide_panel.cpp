@@ -146,12 +146,14 @@ ForceGuidePanel::ForceGuidePanel(Session& session, QWidget* parent)
     if (label != kMotionLabel) return;
     guiding_ = false;
     showGuideStatus();
+    updateButtons();
     if (!ok) showFailure(tr("Hand guiding"), message);
   });
   connect(&session, &Session::commandFinished, this, [this](const QString& label, bool ok, const QString& message) {
     if (label != kMotionLabel || ok) return;
     guiding_ = false;  // refused to start (another motion runs, not connected)
     showGuideStatus();
+    updateButtons();
     showFailure(tr("Hand guiding"), message);
   });
 }
@@ -201,6 +203,7 @@ void ForceGuidePanel::start() {
     a.runJointMotion(motion);
   });
   showGuideStatus();
+  updateButtons();
 }
 
 void ForceGuidePanel::stop() {
@@ -243,16 +246,22 @@ void ForceGuidePanel::showGuideStatus() {
   detail_->setText(text);
 }
 
-void ForceGuidePanel::refresh(const LiveState& live) {
-  start_->setEnabled(!guiding_ && !live.motion_running);
-  stop_->setEnabled(guiding_ && live.motion_running);
+void ForceGuidePanel::updateButtons() {
+  const bool running = isOpen() && session().live().motion_running;
+  start_->setEnabled(isOpen() && !guiding_ && !running);
+  stop_->setEnabled(guiding_ && running);
+}
+
+void ForceGuidePanel::refresh(const LiveState&) {
+  updateButtons();
   showGuideStatus();
 }
 
+void ForceGuidePanel::sessionOpened() { updateButtons(); }
+
 void ForceGuidePanel::sessionClosed() {
-  start_->setEnabled(false);
-  stop_->setEnabled(false);
   guiding_ = false;
+  updateButtons();
   guide_.reset();
   showGuideStatus();
   state_->setText(tr("Not connected"));

@@ -29,12 +29,15 @@ class ForceGuidePanel : public PanelBase {
 
  protected:
   void refresh(const LiveState& live) override;
+  void sessionOpened() override;
   void sessionClosed() override;
 
  private:
   void start();
   void stop();
   void showGuideStatus();
+  // Start while connected and no motion runs, Stop while this panel's guide runs.
+  void updateButtons();
 
   QComboBox* axes_ = nullptr;  // data: GuideAxes
   QDoubleSpinBox* mass_ = nullptr;
