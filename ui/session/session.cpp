@@ -78,6 +78,14 @@ class BackgroundThreads {
   std::vector<Entry> threads_;
 };
 
+// An xMate's six signals as LiveState's bits (bit k = signal k).
+uint64_t bitsOf(const std::array<bool, 6>& levels) {
+  uint64_t bits = 0;
+  for (size_t k = 0; k < levels.size(); ++k)
+    if (levels[k]) bits |= uint64_t{1} << k;
+  return bits;
+}
+
 // The KUKA simulator's outputs as the arm names them: bit k = output k of outputNames().
 uint64_t simulatedOutputs(xmate::arm::RsiArm& arm, uint64_t digout) {
   uint64_t bits = 0;
@@ -116,6 +124,7 @@ struct Session::Impl {
   void drainSamples();
   void refreshLive();
   void refreshKuka();
+  void updateLoopRate(uint64_t count);
   void reportRsiChange(const xmate::rsi::SessionStatus& before, const xmate::rsi::SessionStatus& now);
   void startMotion(const QString& label, std::function<void(const MotionToken&)> job);
   bool controllerSilent();
@@ -257,9 +266,7 @@ void Session::Impl::applyPoll(uint64_t my_generation, const PollResult& poll) {
   live.motor_state = poll.motor_state;
   live.safety_stop = poll.safety_stop;
   live.digital_in = poll.digital_in;
-  live.inputs = 0;
-  for (size_t i = 0; i < poll.digital_in.size(); ++i)
-    if (poll.digital_in[i]) live.inputs |= uint64_t{1} << i;
+  live.inputs = bitsOf(poll.digital_in);
   if (poll.tool != model_tool) {
     model_tool = poll.tool;
     link->model->SetCoor(model_tool);
@@ -288,15 +295,7 @@ void Session::Impl::refreshKuka() {
   live.rsi = arm.sessionStatus();
   reportRsiChange(before, live.rsi);
   live.realtime = arm.link().realtimeStatus();
-  live.motion_running = link->motion.busy.load();
-  const qint64 now = clock.elapsed();
-  const uint64_t count = live.arm.sample.cycle;
-  if (count < rate_start_count) rate_start_count = count;  // a new RSI session counts from 0
-  if (now - rate_start_ms >= 1000) {
-    live.loop_rate_hz = double(count - rate_start_count) * 1000.0 / double(now - rate_start_ms);
-    rate_start_ms = now;
-    rate_start_count = count;
-  }
+  updateLoopRate(live.arm.sample.cycle);
   if (link->krc) {
     live.krc = link->krc->krc().status();
     live.outputs = simulatedOutputs(arm, live.krc.digout);
@@ -320,7 +319,20 @@ void Session::Impl::reportRsiChange(const xmate::rsi::SessionStatus& before, con
     emit self.eventReported(Session::EventLevel::kInfo, words, QString());
 }
 
+// Cycles per second over the last second, from a count that restarts with a new session (an xMate
+// reconnected, a new RSI session).
+void Session::Impl::updateLoopRate(uint64_t count) {
+  const qint64 now = clock.elapsed();
+  if (count < rate_start_count) rate_start_count = count;
+  if (now - rate_start_ms >= 1000) {
+    live.loop_rate_hz = double(count - rate_start_count) * 1000.0 / double(now - rate_start_ms);
+    rate_start_ms = now;
+    rate_start_count = count;
+  }
+}
+
 void Session::Impl::refreshLive() {
+  live.motion_running = link->motion.busy.load();
   if (link->rsi) {
     refreshKuka();
     return;
@@ -336,24 +348,14 @@ void Session::Impl::refreshLive() {
   }
   live.realtime = connection.realtimeStatus();
   live.timing = connection.timing();
-  live.motion_running = link->motion.busy.load();
-  const qint64 now = clock.elapsed();
-  const uint64_t count = live.timing.counters.states_received;
-  if (count < rate_start_count) rate_start_count = count;  // counters restart with a new session
-  if (now - rate_start_ms >= 1000) {
-    live.loop_rate_hz = double(count - rate_start_count) * 1000.0 / double(now - rate_start_ms);
-    rate_start_ms = now;
-    rate_start_count = count;
-  }
+  updateLoopRate(live.timing.counters.states_received);
   if (link->server) {
     live.sim = link->server->status().sim;
     live.digital_out = live.sim.digital_out;
   } else {
     live.digital_out = recorded_do;
   }
-  live.outputs = 0;
-  for (size_t i = 0; i < live.digital_out.size(); ++i)
-    if (live.digital_out[i]) live.outputs |= uint64_t{1} << i;
+  live.outputs = bitsOf(live.digital_out);
 }
 
 bool Session::Impl::controllerSilent() {

@@ -11,6 +11,7 @@
 
 #include "arm/rci_arm.h"
 #include "model/resource_locator.h"
+#include "net/host_port.h"
 #include "rsi/config.h"
 
 namespace rci::ui {
@@ -52,17 +53,14 @@ std::string kukaContext(const SessionTarget& target) {
 
 // "HOST" or "HOST:PORT" of an F/T sensor.
 xmate::ft::NetFtOptions sensorOptions(const QString& address) {
+  xmate::net::HostPort split;
+  if (xmate::net::splitHostPort(address.trimmed().toStdString(), xmate::ft::kDefaultPort, split) !=
+      xmate::net::HostPortProblem::kNone)
+    throw std::runtime_error("The F/T sensor address \"" + address.toStdString() +
+                             "\" is not HOST or HOST:PORT with a port from 1 to 65535 (RDT port 49152).");
   xmate::ft::NetFtOptions options;
-  const int colon = address.lastIndexOf(QLatin1Char(':'));
-  options.host = (colon < 0 ? address : address.left(colon)).trimmed().toStdString();
-  if (colon >= 0) {
-    bool ok = false;
-    const uint port = address.mid(colon + 1).toUInt(&ok);
-    if (!ok || port == 0 || port > 65535)
-      throw std::runtime_error("The F/T sensor address \"" + address.toStdString() +
-                               "\" has no valid port: enter it as HOST or HOST:PORT (RDT port 49152).");
-    options.port = uint16_t(port);
-  }
+  options.host = split.host;
+  options.port = split.port;
   return options;
 }
 
