@@ -12,12 +12,14 @@ const char* typeName(InstructionType type) {
     case InstructionType::kWait: return "WAIT";
     case InstructionType::kSetDo: return "SET_DO";
     case InstructionType::kWaitDi: return "WAIT_DI";
+    case InstructionType::kPath: return "PATH";
   }
   return "?";
 }
 
 bool isMotion(InstructionType type) {
-  return type == InstructionType::kMoveJ || type == InstructionType::kMoveL || type == InstructionType::kMoveC;
+  return type == InstructionType::kMoveJ || type == InstructionType::kMoveL || type == InstructionType::kMoveC ||
+         type == InstructionType::kPath;
 }
 
 std::string describe(const Program& program, size_t index) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Programs of the teach feature (issue 5): an ordered list of instructions -- MOVEJ / MOVEL / MOVEC
-// to taught targets, WAIT, SET_DO, WAIT_DI -- for one robot model. Plain data; the file format is
+// to taught targets, PATH (a demonstrated path replayed as taught), WAIT, SET_DO, WAIT_DI -- for
+// one robot model. Plain data; the file format is
 // program_io.h's job, running it executor.h's.
 #pragma once
 
@@ -13,6 +14,7 @@
 
 #include "model/robot_spec.h"
 #include "model/signal_names.h"
+#include "teach/path.h"
 
 namespace xmate::teach {
 
@@ -26,10 +28,11 @@ struct Target {
   double psi = 0;                  // arm angle, rad (7-axis; ignored on 6-axis models)
 };
 
-enum class InstructionType { kMoveJ, kMoveL, kMoveC, kWait, kSetDo, kWaitDi };
+enum class InstructionType { kMoveJ, kMoveL, kMoveC, kWait, kSetDo, kWaitDi, kPath };
 
-// "MOVEJ", "MOVEL", "MOVEC", "WAIT", "SET_DO", "WAIT_DI".
+// "MOVEJ", "MOVEL", "MOVEC", "WAIT", "SET_DO", "WAIT_DI", "PATH".
 const char* typeName(InstructionType type);
+// MOVEJ, MOVEL, MOVEC and PATH.
 bool isMotion(InstructionType type);
 
 struct Instruction {
@@ -37,7 +40,8 @@ struct Instruction {
   std::string name;        // optional label ("P1")
   Target target;           // MOVEJ / MOVEL / MOVEC
   Target via;              // MOVEC only: the arc passes through it
-  double speed = 0.3;      // motions: speed ratio in (0, 1]
+  JointPath path;          // PATH only: the demonstrated joints at a fixed rate (teach/path.h)
+  double speed = 0.3;      // motions: speed ratio in (0, 1]; PATH: of the demonstrated pace
   int ms = 0;              // WAIT: milliseconds
   int signal = 0;          // SET_DO: DOSIGNAL index; WAIT_DI: DISIGNAL index (0..5)
   bool value = false;      // SET_DO level / WAIT_DI expected level

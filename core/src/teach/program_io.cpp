@@ -4,7 +4,9 @@
 #include "teach/program_io.h"
 
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
+#include <vector>
 
 #include "model/robot_spec.h"
 #include "planning/cartesian_pose.h"
@@ -130,9 +132,10 @@ InstructionType typeFrom(const Json& v, const Where& w) {
   if (!v.is_string()) w.fail("type", "expected a string, " + got(v));
   const std::string& name = v.get_ref<const std::string&>();
   for (InstructionType t : {InstructionType::kMoveJ, InstructionType::kMoveL, InstructionType::kMoveC,
-                            InstructionType::kWait, InstructionType::kSetDo, InstructionType::kWaitDi})
+                            InstructionType::kWait, InstructionType::kSetDo, InstructionType::kWaitDi,
+                            InstructionType::kPath})
     if (name == typeName(t)) return t;
-  w.fail("type", "unknown instruction type \"" + name + "\" (known: MOVEJ, MOVEL, MOVEC, WAIT, SET_DO, WAIT_DI)");
+  w.fail("type", "unknown instruction type \"" + name + "\" (known: MOVEJ, MOVEL, MOVEC, PATH, WAIT, SET_DO, WAIT_DI)");
 }
 
 int signalFrom(const Json& in, bool output, const model::RobotSpec& spec, const Where& w) {
@@ -144,6 +147,42 @@ int signalFrom(const Json& in, bool output, const model::RobotSpec& spec, const 
     w.fail("signal", "unknown signal \"" + name + "\" for the " + std::string(spec.display_name) +
                          " (known: " + knownSignals(spec.family, output) + ")");
   return index;
+}
+
+// A PATH's samples: at least kMinPathSamples arrays of 7 finite joint values within the model's range.
+// Checked number by number without building field names until one fails (a minute at 1 kHz is
+// 420 000 numbers).
+std::vector<JointPoint> pathSamplesFrom(const Json& v, double rate_hz, const model::RobotSpec& spec, const Where& w) {
+  if (!v.is_array()) w.fail("q", "expected an array of samples, each 7 joint values in rad, " + got(v));
+  if (v.size() < kMinPathSamples)
+    w.fail("q", "a path needs at least " + std::to_string(kMinPathSamples) + " samples, got " + std::to_string(v.size()));
+  std::vector<JointPoint> q(v.size());
+  for (size_t k = 0; k < v.size(); ++k) {
+    const Json& sample = v[k];
+    const std::string field = "q[" + std::to_string(k) + "]";
+    if (!sample.is_array() || sample.size() != 7)
+      w.fail(field, "expected an array of 7 joint values in rad, " +
+                        (sample.is_array() ? "got " + std::to_string(sample.size()) + " elements" : got(sample)));
+    for (size_t j = 0; j < 7; ++j) {
+      const Json& x = sample[j];
+      const double value = x.is_number() ? x.get<double>() : NAN;
+      const bool in_range = int(j) < spec.dof ? value >= spec.q_min[j] && value <= spec.q_max[j] : value == 0;
+      if (in_range) {
+        q[k][j] = value;
+        continue;
+      }
+      const std::string at = field + "[" + std::to_string(j) + "]";
+      finiteNumber(x, at, w);  // names a non-number or a non-finite one
+      char where[64];
+      std::snprintf(where, sizeof where, " (sample %zu, t = %.3f s of the path)", k, double(k) / rate_hz);
+      if (int(j) >= spec.dof) w.fail(at, "must be 0 on the 6-axis " + std::string(spec.display_name) + where);
+      char range[160];
+      std::snprintf(range, sizeof range, "joint %zu at %.4f rad is outside its range [%.4f, %.4f] rad", j + 1, value,
+                    spec.q_min[j], spec.q_max[j]);
+      w.fail(at, range + std::string(where) + "; record the path again within the joint range");
+    }
+  }
+  return q;
 }
 
 Instruction instructionFrom(const Json& in, size_t index, const model::RobotSpec& spec) {
@@ -184,6 +223,16 @@ Instruction instructionFrom(const Json& in, size_t index, const model::RobotSpec
       out.value = boolean(require(in, "value", "value", w), "value", w);
       out.timeout_ms = integerIn(require(in, "timeout_ms", "timeout_ms", w), "timeout_ms", 1, 3'600'000, w);
       break;
+    case InstructionType::kPath: {
+      refuseUnknown(in, {"type", "name", "rate_hz", "q", "speed"}, "", w);
+      const double rate = finiteNumber(require(in, "rate_hz", "rate_hz", w), "rate_hz", w);
+      if (!(rate >= kMinPathRate && rate <= kMaxPathRate))
+        w.fail("rate_hz", "expected a sample rate from 1 to 1000 Hz, got " + std::to_string(rate));
+      out.path.rate_hz = rate;
+      out.path.q = pathSamplesFrom(require(in, "q", "q", w), rate, spec, w);
+      out.speed = speedFrom(in, w);
+      break;
+    }
   }
   return out;
 }
@@ -220,6 +269,11 @@ Json instructionToJson(const Instruction& in, model::RobotFamily family) {
       v["signal"] = diName(family, in.signal);
       v["value"] = in.value;
       v["timeout_ms"] = in.timeout_ms;
+      break;
+    case InstructionType::kPath:
+      v["rate_hz"] = in.path.rate_hz;
+      v["q"] = in.path.q;
+      v["speed"] = in.speed;
       break;
   }
   return v;
@@ -268,7 +322,12 @@ Program programFromJson(const Json& doc) {
     p.load = payloadFrom(*load, w);
     p.has_tool = true;
   }
-  for (size_t i = 0; i < list.size(); ++i) p.instructions.push_back(instructionFrom(list[i], i, *spec));
+  for (size_t i = 0; i < list.size(); ++i) {
+    p.instructions.push_back(instructionFrom(list[i], i, *spec));
+    if (v < 2 && p.instructions.back().type == InstructionType::kPath)  // PATH came with version 2
+      Where{"instruction " + std::to_string(i + 1) + " (PATH)"}.fail(
+          "type", "a PATH needs a program of version 2, but the file says \"version\": 1; change it to 2");
+  }
   return p;
 }
 

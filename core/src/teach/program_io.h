@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The program file format (docs/teach.md): JSON with "format": "rci-program", "version": 1, the
-// robot model and the instructions. Loading checks everything and names the instruction (number
-// and type) and the field of the first problem; saving is atomic.
+// The program file format (docs/teach.md): JSON with "format": "rci-program", "version": 2 (1 is
+// still read), the robot model, the tool and load, and the instructions (PATH needs version 2).
+// Loading checks everything and names the instruction (number and type) and the field of the first
+// problem; saving is atomic.
 #pragma once
 
 #include <stdexcept>
@@ -21,7 +22,7 @@ class ProgramError : public std::runtime_error {
 };
 
 inline constexpr const char* kProgramFormat = "rci-program";
-inline constexpr int kProgramVersion = 2;         // what saving writes: adds "tool" and "load"
+inline constexpr int kProgramVersion = 2;         // what saving writes: adds "tool", "load" and PATH
 inline constexpr int kOldestProgramVersion = 1;   // still read
 
 // A parsed document (teach/json_text.h) <-> program.
