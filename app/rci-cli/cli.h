@@ -162,6 +162,7 @@ int runDoctor();                             // rci-cli doctor
 int runBenchLoop(const LoopOptions& options);  // rci-cli bench loop [--robot sim|HOST:PORT] [--cycles N] [--lockstep] [--model NAME]
 int runBenchClient(long cycles);             // rci-cli bench client [--cycles N]
 int runBenchRsi(long cycles);                // rci-cli bench rsi [--cycles N]
+int runBenchPath(double seconds, int rounds);  // rci-cli bench path [--seconds S] [--rounds N]
 int runRun(const RunOptions& options);
 // rci-cli guide --robot rsi:ETHERNET.xml --model NAME --sensor HOST[:PORT] [--axes A] [--tool-mass KG] ...
 int runGuide(const GuideOptions& options);       // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]

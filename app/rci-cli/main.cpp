@@ -57,15 +57,15 @@ std::string explain(const CLI::ParseError& e, const CLI::App& app, const CLI::Ap
     if (!first.empty() && first[0] == '-')
       return (name.empty() ? "" : name + ": ") + "unknown option '" + first + "'";
     if (command == &app) return "unknown command '" + first + "' (known: model, state, run, guide, doctor, bench, ft, help)";
-    if (name == "bench") return "unknown bench '" + first + "' (known: loop, client, rsi)";
+    if (name == "bench") return "unknown bench '" + first + "' (known: loop, client, rsi, path)";
     return name + ": unexpected argument '" + first + "'";
   }
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) return what.substr(0, what.find(':')) + " needs a value";
   if (dynamic_cast<const CLI::RequiredError*>(&e)) {
     if (name == "bench") {
       const auto rest = command->remaining();
-      return rest.empty() ? "bench needs 'loop', 'client' or 'rsi'"
-                          : "unknown bench '" + rest.front() + "' (known: loop, client, rsi)";
+      return rest.empty() ? "bench needs 'loop', 'client', 'rsi' or 'path'"
+                          : "unknown bench '" + rest.front() + "' (known: loop, client, rsi, path)";
     }
     if (what.rfind("PROGRAM", 0) == 0) return "run needs a program file (PROGRAM.json)";
     if (what.rfind("--robot", 0) == 0)
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
   CLI::App* doctor = app.add_subcommand("doctor", "real-time fitness of this machine, with advice");
 
   CLI::App* bench =
-      app.add_subcommand("bench", "benchmarks: the 1 kHz loop, the client's and the RSI link's cost per cycle");
+      app.add_subcommand("bench", "benchmarks: the 1 kHz loop, the client's and the RSI link's cost per cycle, demonstrated paths");
   bench->require_subcommand(1);
   LoopOptions loop_options;
   CLI::App* loop = bench->add_subcommand("loop", "1 kHz joint-position loop: period, jitter, late and lost cycles");
@@ -157,6 +157,12 @@ int main(int argc, char** argv) {
       "rsi", "the RSI link's cost per cycle (parse <Rob>, callback, compose <Sen>, send) against a tinyxml2 DOM "
              "and a raw sendto");
   addWholeNumberOption(*rsi_bench, "--cycles", rsi_cycles, 100, 100'000'000, "cycles to measure (default 100000)");
+  long path_seconds = 60, path_rounds = 5;
+  CLI::App* path_bench = bench->add_subcommand(
+      "path", "teach by demonstration: reducing a 1 kHz recording and re-timing it for replay, against writing it "
+              "as JSON");
+  addWholeNumberOption(*path_bench, "--seconds", path_seconds, 1, 3600, "length of the recording (default 60)");
+  addWholeNumberOption(*path_bench, "--rounds", path_rounds, 1, 1000, "rounds to take the median of (default 5)");
 
   FtOptions ft_options;
   CLI::App* ft = app.add_subcommand("ft", "read an ATI Net F/T force/torque sensor: Fx Fy Fz (N) and Tx Ty Tz (Nm) per sample");
@@ -249,6 +255,7 @@ int main(int argc, char** argv) {
     if (loop->parsed()) return runBenchLoop(loop_options);
     if (client->parsed()) return runBenchClient(client_cycles);
     if (rsi_bench->parsed()) return runBenchRsi(rsi_cycles);
+    if (path_bench->parsed()) return runBenchPath(double(path_seconds), int(path_rounds));
     return runModel(model_type);  // `rci-cli` alone or `rci-cli model [NAME]`
   } catch (const UsageError& e) {
     const CLI::App* command = selectedCommand(app);

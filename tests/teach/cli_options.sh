@@ -40,7 +40,7 @@ expect 2 "NAME: unknown model 'xmate9'" model xmate9
 # Unknown options and commands, extra arguments.
 expect 2 "state: unknown option '--frobnicate'" state --robot 127.0.0.1:1 --frobnicate
 expect 2 "unknown command 'frob' (known: model, state, run, guide, doctor, bench, ft, help)" frob
-expect 2 "unknown bench 'fast' (known: loop, client, rsi)" bench fast
+expect 2 "unknown bench 'fast' (known: loop, client, rsi, path)" bench fast
 expect 2 "model: unexpected argument 'xmate3'" model xmate7 xmate3
 # Missing values and missing required arguments.
 expect 2 "--robot needs a value" state --robot
@@ -48,7 +48,7 @@ expect 2 "--cycles needs a value" bench loop --cycles
 expect 2 "state needs --robot HOST:PORT (an xMate) or --robot rsi:ETHERNET.xml (a KUKA over RSI)" state --count 3
 expect 2 "run needs --robot sim or --robot HOST:PORT" run p.json
 expect 2 "run needs a program file (PROGRAM.json)" run --robot sim
-expect 2 "bench needs 'loop', 'client' or 'rsi'" bench
+expect 2 "bench needs 'loop', 'client', 'rsi' or 'path'" bench
 # Options that exclude each other.
 expect 2 "--fast applies to the in-process simulator (--robot sim)" run p.json --robot 127.0.0.1:1 --fast
 # run on a KUKA over RSI: the RSI options only with rsi:, a cycle of 4 or 12 ms.
@@ -90,6 +90,9 @@ expect 2 "--cycles takes a whole number from 100 to 100000000, got '5'" bench rs
 expect 1 "x.xml: cannot open" state --robot rsi:x.xml --model kr16_2
 expect 0 "--wait S" state --help
 expect 0 "tinyxml2" bench rsi --help
+expect 2 "--seconds takes a whole number from 1 to 3600, got '0'" bench path --seconds 0
+# bench path runs offline: a short recording reduced to 100 Hz within the bound, and re-timed.
+expect 0 "stored at 100 Hz" bench path --seconds 3 --rounds 1
 # guide: a KUKA over RSI only; its decimal options in range.
 expect 2 "--robot: guide takes rsi:ETHERNET.xml, the KUKA's Ethernet config" guide --robot 127.0.0.1:1 --model kr16_2 --sensor 127.0.0.1
 expect 2 "--max-speed takes a speed from 0.01 to 1.0 m/s, got '5'" guide --robot rsi:x.xml --model kr16_2 --sensor 127.0.0.1 --max-speed 5

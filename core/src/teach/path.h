@@ -126,15 +126,16 @@ class PathRecorder {
   uint64_t lost_ = 0;
 };
 
-// The TCP path of a path (forward kinematics with `tool`, m, base frame), at most max_points
-// points evenly spread over it, the first and last sample included: the 3D view's trace.
-// Length of the TCP path (m) over every sample.
+// What the Program panel's table shows of a path: its duration, the length of its TCP path (forward
+// kinematics with `tool`, m, over every sample) and its sample count.
 struct PathSummary {
   double duration = 0;     // s
   double tcp_length = 0;   // m
   size_t samples = 0;
 };
 PathSummary summarizePath(const JointPath& path, const model::RobotSpec& spec, const std::array<double, 16>& tool);
+// The TCP positions along a path (m, base frame; forward kinematics with `tool`), at most max_points
+// evenly spread over it, the first and last sample included: the 3D view's trace.
 std::vector<std::array<double, 3>> tcpTrace(const JointPath& path, const model::RobotSpec& spec,
                                             const std::array<double, 16>& tool, size_t max_points = 2000);
 
