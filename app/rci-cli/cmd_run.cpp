@@ -2,8 +2,9 @@
 // rci-cli run: loads a program, connects to a robot (or starts an in-process simulator for the
 // program's model: real-time clock, or lock-step with --fast) -- an xMate over RCI, or a KUKA over
 // RSI (rsi:ETHERNET.xml, or rsi-sim: an in-process simulated KRC) -- runs the pre-flight and the
-// executor (core/src/teach), prints a line per instruction, and writes the run report. Ctrl-C stops
-// the robot smoothly on its path.
+// executor (core/src/teach), prints what the pre-flight announces and a line per instruction (a
+// PATH also how closely it followed the demonstration and how much it was slowed), and writes the
+// run report. Ctrl-C stops the robot smoothly on its path.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -14,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include <xmate/robot.h>
 
@@ -54,6 +56,25 @@ std::unique_ptr<xmate::sim::Server> startSimulator(xmate::XmateType type, xmate:
   return xmate::sim::startEmbedded(std::move(config));
 }
 
+// A PATH's own line: how long against the demonstration, how closely followed, how much slowed.
+void printPath(const InstructionReport& r) {
+  std::printf("        path %.3f s (demonstrated pace: %.3f s", r.duration, r.nominal_duration);
+  if (r.lead_in > 0) std::printf("; lead-in move %.3f s", r.lead_in);
+  std::printf("), deviation from the path %.3f mrad / %.3f mm, ", r.path_joint_deviation * 1000,
+              r.path_tcp_deviation * 1000);
+  if (r.slowest_pace < 1)
+    std::printf("slowed to %.0f %% of the asked pace at t = %.2f s of the path (%.0f %% of its time slowed)\n",
+                r.slowest_pace * 100, r.slowest_at, r.slowed_share * 100);
+  else
+    std::printf("never slowed\n");
+}
+
+// What the pre-flight announces (a PATH's lead-in move), before anything moves.
+void printNotices(const std::vector<Problem>& notices) {
+  for (const Problem& n : notices) std::printf("note: %s\n", n.message.c_str());
+  std::fflush(stdout);
+}
+
 void printDone(const Program& program, size_t i, const InstructionReport& r) {
   const Instruction& in = program.instructions[i];
   std::printf("[%zu/%zu] %-7s %-10s %-8s %7.3f s", i + 1, program.instructions.size(), typeName(in.type),
@@ -62,6 +83,7 @@ void printDone(const Program& program, size_t i, const InstructionReport& r) {
     std::printf("  TCP (%.4f, %.4f, %.4f) m  max tracking error %.2e rad / %.3f mm", r.pose[3], r.pose[7],
                 r.pose[11], r.max_joint_error, r.max_tcp_error * 1000);
   std::printf("\n");
+  if (in.type == InstructionType::kPath && r.status != InstructionStatus::kNotRun) printPath(r);
   if (isMotion(in.type) && !r.settled)
     std::printf("        not at rest 1 s after the motion (joint error %.2e rad): check the payload and the "
                 "joint impedance\n",
@@ -108,6 +130,7 @@ int replay(const RunOptions& o, const Program& program,
   Executor executor;
   ExecutorOptions options;
   options.speed_override = o.speed;
+  options.on_notices = printNotices;
   options.on_done = [&](size_t i, const InstructionReport& r) { printDone(program, i, r); };
   std::signal(SIGINT, onInterrupt);
   std::atomic<bool> done{false};

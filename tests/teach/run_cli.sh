@@ -4,7 +4,8 @@
 # writes a finished report, on the real-time clock by default and on the lock-step clock with
 # --fast, and says which clock ran; a usage error exits 2; a program refused by the pre-flight
 # exits 1 without moving; the KUKA example runs over RSI on the in-process simulated KRC, and a
-# program of one family is refused on the other's robot. Arguments: RCI_CLI EXAMPLE_PROGRAM WORK_DIR.
+# program of one family is refused on the other's robot; a demonstrated PATH is replayed on either
+# family, its lead-in announced and its deviation reported. Arguments: RCI_CLI EXAMPLE_PROGRAM WORK_DIR.
 set -u
 cli=$1 example=$2 work=$3
 report=$work/cli_run_report.json
@@ -76,4 +77,35 @@ wait "$sim_pid" 2>/dev/null
 echo "$out" | grep -q '^finished: 7 instructions' || fail "the run against rci-sim --rsi did not finish: $out"
 grep -q 'in lock-step (each cycle as soon as its answer is in), cycle 4 ms' "$work/rci_sim_rsi.log" ||
   fail "rci-sim --rsi --lockstep does not say it runs in lock-step: $(cat "$work/rci_sim_rsi.log")"
-echo "11 passed, 0 failed"
+# A demonstrated PATH (resources/programs/demonstration.json): the joint move to its start is announced before anything
+# moves, the replay line says how long it took, how closely it followed and whether it was slowed; the report has the
+# path's fields and the notice.
+demo=$(dirname "$example")/demonstration.json
+out=$("$cli" run "$demo" --robot sim --fast --report "$report" 2>&1) || fail "run of the PATH example exited $?: $out"
+echo "$out" | grep -q '^note: instruction 1 (PATH "wipe"): first moves to the start of the path with a joint move (largest joint change 11.5 deg)$' ||
+  fail "the lead-in move is not announced: $out"
+echo "$out" | grep -q '^        path 3\.[0-9]* s (demonstrated pace: 3\.000 s; lead-in move 0\.[0-9]* s), deviation from the path 0\.[0-9]* mrad / [0-9.]* mm, never slowed$' ||
+  fail "no PATH line within 1 mrad: $out"
+grep -q '"outcome": "finished"' "$report" || fail "the PATH run did not finish: $(head -c 400 "$report")"
+for field in lead_in_s nominal_duration_s path_joint_deviation_rad path_tcp_deviation_m slowest_pace slowed_share slowest_at_s; do
+  grep -q "\"$field\"" "$report" || fail "the PATH report has no $field"
+done
+grep -q 'first moves to the start of the path' "$report" || fail "the report has no notice of the lead-in"
+
+# A PATH on a KUKA over RSI (the simulated KRC): A1 and A5 out and back in 2 s from the KRC's start pose.
+kuka_path=$work/cli_kuka_path.json
+awk 'BEGIN {
+  pi = atan2(0, -1); d = pi / 180; n = 200
+  printf "{\"format\": \"rci-program\", \"version\": 2, \"robot\": \"kr6_r900_sixx\", \"instructions\": [\n"
+  printf "{\"type\": \"PATH\", \"name\": \"sweep\", \"rate_hz\": 100, \"speed\": 1, \"q\": [\n"
+  for (k = 0; k <= n; ++k) {
+    u = k / n; s = u * u * u * (10 - 15 * u + 6 * u * u); f = (1 - cos(2 * pi * s)) / 2
+    printf "[%.6f, %.6f, %.6f, %.6f, %.6f, %.6f, 0]%s\n", 10 * f * d, -90 * d, 90 * d, 0, (90 - 8 * f) * d, 0, (k < n ? "," : "")
+  }
+  printf "]}]}\n"
+}' > "$kuka_path"
+out=$("$cli" run "$kuka_path" --robot rsi-sim --report "$report" 2>&1) || fail "run of the KUKA PATH exited $?: $out"
+echo "$out" | grep -q '^        path 2\.[0-9]* s (demonstrated pace: 2\.000 s), deviation from the path 0\.[0-9]* mrad' ||
+  fail "no KUKA PATH line within 1 mrad: $out"
+grep -q '"outcome": "finished"' "$report" || fail "the KUKA PATH run did not finish: $(head -c 400 "$report")"
+echo "13 passed, 0 failed"

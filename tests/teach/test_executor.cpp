@@ -8,6 +8,7 @@
 // its target is reported as not at rest.
 #include <QtTest>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -17,6 +18,7 @@
 #include <xmate/robot.h>
 
 #include "client_test_support.h"
+#include "demonstration.h"
 #include "teach/executor.h"
 #include "teach/program_io.h"
 #include "teach/recording.h"
@@ -26,6 +28,8 @@
 using namespace xmate;
 using namespace xmate::teach;
 using namespace client_test;
+using teach_test::demonstration;
+using teach_test::pathInstruction;
 
 namespace {
 
@@ -72,6 +76,31 @@ Program longMove(Robot& robot, double delta, double speed, int joint = 0) {
   Program p;
   p.instructions.push_back(moveJ(jointTarget(q), speed, "far"));
   return p;
+}
+
+// The gentle demonstration the PATH tests replay: 2.5 s, four joints out and back, joint 3 across
+// by `across` rad.
+JointPath gentlePath(const std::array<double, 7>& q0, double across = 0.2) {
+  return demonstration(q0, {0.3, 0.1, 0, -0.25, 0, 0.4, 0}, {0, 0, across, 0, 0, 0, 0}, 2.5);
+}
+
+Program pathProgram(const JointPath& path, double speed, const std::string& name = "demo") {
+  Program p;
+  p.instructions.push_back(pathInstruction(path, speed, name));
+  return p;
+}
+
+// The path's replay reached its last sample, followed the path within 1 mrad and tripped nothing.
+void verifyFollowed(Robot& robot, const RunReport& report, const JointPath& path) {
+  QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  const InstructionReport& r = report.instructions[0];
+  QCOMPARE(r.status, InstructionStatus::kDone);
+  QVERIFY2(r.path_joint_deviation > 0 && r.path_joint_deviation < 1e-3,
+           qPrintable(QString::number(r.path_joint_deviation)));
+  QVERIFY2(r.path_tcp_deviation < 1e-3, qPrintable(QString::number(r.path_tcp_deviation)));
+  QVERIFY(r.settled);
+  QVERIFY(maxAbsDiff(robot.receiveRobotState().q, path.q.back()) < kJointTolerance);
+  QVERIFY(!anyError(robot.receiveRobotState()));
 }
 
 // Runs `action` on its own thread once the executor's progress satisfies `when`.
@@ -123,6 +152,10 @@ class TestExecutor : public QObject {
   void ioInstructions();
   void poseTargetsOnASixAxisArm();
   void anotherToolIsRefusedNamingTheInstruction();
+  void pathIsReplayedAtAnySpeed();
+  void tooFastDemonstrationIsSlowedAndFollowed();
+  void pauseResumeAndStopDuringAPath();
+  void pathStartingElsewhereLeadsInWithAJointMove();
 };
 
 void TestExecutor::teachByDraggingAndReplay() {
@@ -567,6 +600,136 @@ void TestExecutor::poseTargetsOnASixAxisArm() {
   const RunReport wrong = executor.run(*robot, program);
   QCOMPARE(wrong.outcome, RunState::kRefused);
   QVERIFY2(QString::fromStdString(wrong.message).contains("taught for the xMate Pro 7"), wrong.message.c_str());
+}
+
+// A PATH starting where the arm is, at 100 %, 50 % and 10 % of the demonstrated pace: within 1 mrad
+// of the demonstration each time, in the demonstrated time / speed, never slowed.
+void TestExecutor::pathIsReplayedAtAnySpeed() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  Executor executor;
+  for (double speed : {1.0, 0.5, 0.1}) {
+    // Out and back but for joint 3: each replay starts where the previous one ended.
+    const JointPath from_here = gentlePath(robot->receiveRobotState().q, speed == 0.5 ? -0.2 : 0.2);
+    const Program program = pathProgram(from_here, speed);
+    const RunReport report = executor.run(*robot, program);
+    verifyFollowed(*robot, report, from_here);
+    const InstructionReport& r = report.instructions[0];
+    qInfo("speed %.1f: %.3f s (nominal %.3f s), deviation %.3f mrad / %.3f mm, tracking %.3f mrad", speed,
+          r.duration, r.nominal_duration, r.path_joint_deviation * 1e3, r.path_tcp_deviation * 1e3,
+          r.max_joint_error * 1e3);
+    QVERIFY(report.notices.empty());
+    QCOMPARE(r.lead_in, 0.0);
+    QVERIFY(std::abs(r.nominal_duration - 2.5 / speed) < 1e-9);
+    QCOMPARE(r.slowest_pace, 1.0);
+    QCOMPARE(r.slowed_share, 0.0);
+    QVERIFY2(r.duration > 0.98 * r.nominal_duration && r.duration < 1.05 * r.nominal_duration + 0.05,
+             qPrintable(QString("%1 s for %2 s").arg(r.duration).arg(r.nominal_duration)));
+  }
+}
+
+// A demonstration whose joint 1 moves at 1.6 times its rated speed is slowed there, still followed
+// within 1 mrad, and the controller sees nothing beyond its limits.
+void TestExecutor::tooFastDemonstrationIsSlowedAndFollowed() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  const double seconds = 1.2;
+  const double travel = 1.6 * 2.175 * seconds / 1.875;  // the quintic's peak speed is 1.875 travel / seconds
+  const JointPath path = demonstration(robot->receiveRobotState().q, {0, 0, 0, 0.2, 0, 0, 0},
+                                       {travel, 0, 0, 0, 0, 0, 0}, seconds);
+  Executor executor;
+  const RunReport report = executor.run(*robot, pathProgram(path, 1.0, "fast"));
+  verifyFollowed(*robot, report, path);
+  const InstructionReport& r = report.instructions[0];
+  qInfo("slowed to %.2f at t = %.2f s, %.0f %% of the path slowed; %.3f s for a %.3f s demonstration; deviation "
+        "%.3f mrad",
+        r.slowest_pace, r.slowest_at, r.slowed_share * 100, r.duration, r.nominal_duration,
+        r.path_joint_deviation * 1e3);
+  QVERIFY2(r.slowest_pace < 0.8 / 1.6 + 0.05, qPrintable(QString::number(r.slowest_pace)));
+  QVERIFY(r.slowed_share > 0 && r.slowed_share < 1);
+  QVERIFY(r.slowest_at > 0.2 * seconds && r.slowest_at < 0.8 * seconds);  // around the peak speed
+  QVERIFY(r.duration > r.nominal_duration);
+  const std::string json = reportToJson(pathProgram(path, 1.0, "fast"), report).dump();
+  for (const char* field : {"\"lead_in_s\"", "\"path_joint_deviation_rad\"", "\"path_tcp_deviation_m\"",
+                            "\"nominal_duration_s\"", "\"slowest_pace\"", "\"slowed_share\"", "\"slowest_at_s\"",
+                            "\"notices\""})
+    QVERIFY2(json.find(field) != std::string::npos, field);
+}
+
+// Pause holds the arm on the path and resume finishes it; stop ends the path on its way. Both stay
+// within 1 mrad of the demonstration.
+void TestExecutor::pauseResumeAndStopDuringAPath() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  const JointPath path = gentlePath(robot->receiveRobotState().q);  // out and back but for joint 3
+  Executor executor;
+  double paused_at = -1, fraction_later = -1;
+  std::array<double, 7> q_paused{}, q_later{};
+  {
+    WhenProgress pauser(executor, [](const Progress& p) { return p.state == RunState::kRunning && p.fraction > 0.3; },
+                        [&] {
+                          executor.pause();
+                          if (!eventually([&] { return executor.progress().state == RunState::kPaused; })) return;
+                          paused_at = executor.progress().fraction;
+                          eventually([&] {
+                            double speed = 0;
+                            for (double v : robot->receiveRobotState().dq_m) speed = std::max(speed, std::abs(v));
+                            return speed < 1e-4;
+                          });
+                          q_paused = robot->receiveRobotState().q;
+                          std::this_thread::sleep_for(std::chrono::milliseconds(150));
+                          q_later = robot->receiveRobotState().q;
+                          fraction_later = executor.progress().fraction;
+                          executor.resume();
+                        });
+    const RunReport report = executor.run(*robot, pathProgram(path, 0.5));
+    verifyFollowed(*robot, report, path);
+  }
+  QVERIFY2(paused_at > 0.3 && paused_at < 0.95, qPrintable(QString::number(paused_at)));
+  QCOMPARE(fraction_later, paused_at);
+  QVERIFY(maxAbsDiff(q_paused, q_later) < 1e-5);
+  QVERIFY(maxAbsDiff(q_paused, path.q.front()) > 0.05);  // on the way, not at either end
+  QVERIFY(maxAbsDiff(q_paused, path.q.back()) > 0.05);
+
+  // Back along the path (reversed) and stopped on the way.
+  JointPath back = path;
+  std::reverse(back.q.begin(), back.q.end());
+  RunReport report;
+  {
+    WhenProgress stopper(executor, [](const Progress& p) { return p.fraction > 0.4; }, [&] { executor.stop(); });
+    report = executor.run(*robot, pathProgram(back, 0.5));
+  }
+  QVERIFY2(report.outcome == RunState::kStopped, report.message.c_str());
+  const InstructionReport& r = report.instructions[0];
+  QCOMPARE(r.status, InstructionStatus::kStopped);
+  QVERIFY2(r.path_joint_deviation < 1e-3, qPrintable(QString::number(r.path_joint_deviation)));
+  QVERIFY(r.duration < 0.95 * r.nominal_duration);
+  QVERIFY(maxAbsDiff(robot->receiveRobotState().q, back.q.back()) > 0.05);  // stopped short of the end
+  QVERIFY(!anyError(robot->receiveRobotState()));
+}
+
+// A path that starts away from the arm: the pre-flight announces the joint move to its start, the
+// executor makes it (timed apart from the path) and then follows the path.
+void TestExecutor::pathStartingElsewhereLeadsInWithAJointMove() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  std::array<double, 7> start = robot->receiveRobotState().q;
+  start[0] += 0.3;
+  start[3] -= 0.2;
+  const JointPath path = gentlePath(start);
+  std::vector<Problem> announced;
+  ExecutorOptions options;
+  options.on_notices = [&](const std::vector<Problem>& notices) { announced = notices; };
+  Executor executor;
+  const RunReport report = executor.run(*robot, pathProgram(path, 1.0, "wipe"), options);
+  verifyFollowed(*robot, report, path);
+  QCOMPARE(report.notices.size(), size_t(1));
+  QCOMPARE(report.notices[0].message, std::string("instruction 1 (PATH \"wipe\"): first moves to the start of the path "
+                                                  "with a joint move (largest joint change 17.2 deg)"));
+  QCOMPARE(announced.size(), size_t(1));
+  const InstructionReport& r = report.instructions[0];
+  QVERIFY2(r.lead_in > 0.1, qPrintable(QString::number(r.lead_in)));
+  QVERIFY(r.duration > 0.98 * r.nominal_duration && r.duration < 1.05 * r.nominal_duration + 0.05);
 }
 
 QTEST_GUILESS_MAIN(TestExecutor)

@@ -3,11 +3,13 @@
 // KRC (sim::KrcServer on its timed thread) on loopback. A program of MOVEJ, MOVEL and MOVEC on the
 // KR 6 R900 sixx reaches its targets; a motion beyond the context's correction limits is refused
 // before it moves, naming the axis, the limit and the value; RSI going off in the middle of a motion
-// fails the instruction saying so; stop() brakes and ends the run.
+// fails the instruction saying so; stop() brakes and ends the run. A PATH is replayed within 1 mrad
+// after its lead-in, and refused before it moves when the correction limits do not allow it.
 #include <QtTest>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <thread>
 
@@ -20,9 +22,11 @@
 #include "sim/krc_server.h"
 #include "teach/executor.h"
 #include "teach/recording.h"
+#include "demonstration.h"
 
 using namespace xmate;
 using namespace xmate::teach;
+using teach_test::pathInstruction;
 
 namespace {
 
@@ -105,6 +109,14 @@ Program kukaProgram() {
   return p;
 }
 
+// A demonstration from q0 (teach_test::demonstration), each axis out by out_and_back[i] degrees
+// and back.
+JointPath demonstration(const std::array<double, 7>& q0, const std::array<double, 6>& out_and_back, double seconds) {
+  std::array<double, 7> rad{};
+  for (size_t i = 0; i < 6; ++i) rad[i] = out_and_back[i] * kDeg;
+  return teach_test::demonstration(q0, rad, {}, seconds);
+}
+
 }  // namespace
 
 class TestExecutorRsi : public QObject {
@@ -117,6 +129,8 @@ class TestExecutorRsi : public QObject {
   void stopBrakesAndEndsTheRun();
   void digitalSignalsGoThroughTheContext();
   void withoutWiredSignalsSetDoSaysSo();
+  void pathIsReplayedOnTheSimulatedKrc();
+  void pathBeyondTheCorrectionLimitsIsRefusedNamingItsTime();
 };
 
 void TestExecutorRsi::programReachesItsTargets() {
@@ -259,6 +273,62 @@ void TestExecutorRsi::withoutWiredSignalsSetDoSaysSo() {
   QCOMPARE(report.outcome, RunState::kFailed);
   QVERIFY2(QString::fromStdString(report.message).contains("the RSI context wires no digital inputs or outputs to the PC"),
            report.message.c_str());
+}
+
+// A PATH from elsewhere: the joint move to its start, then the path at the demonstrated pace and at
+// half of it, within 1 mrad of the demonstration and with no stop of RSI.
+void TestExecutorRsi::pathIsReplayedOnTheSimulatedKrc() {
+  Cell cell("resources/rsi/rci_replay.rsi.xml");
+  // A brisk sweep: 20 to 40 deg out and back in 2 s on every axis.
+  const JointPath path = demonstration(offset(cell.start(), {10, 5, -5, 0, 0, 0}), {20, 10, -15, 25, -20, 40}, 2.0);
+  Program p = kukaProgram();
+  p.instructions.push_back(pathInstruction(path, 1.0, "sweep"));
+  p.instructions.push_back(pathInstruction(path, 0.5, "again"));
+  Executor executor;
+  const RunReport report = executor.run(*cell.arm, p, {});
+  QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  QCOMPARE(report.notices.size(), size_t(1));
+  QVERIFY2(report.notices[0].message ==
+               "instruction 1 (PATH \"sweep\"): first moves to the start of the path with a joint move (largest joint "
+               "change 10.0 deg)",
+           report.notices[0].message.c_str());
+  for (size_t i = 0; i < 2; ++i) {
+    const InstructionReport& r = report.instructions[i];
+    qInfo("%s: %.3f s (nominal %.3f s), lead-in %.3f s, deviation %.3f mrad / %.3f mm", i ? "again" : "sweep",
+          r.duration, r.nominal_duration, r.lead_in, r.path_joint_deviation * 1e3, r.path_tcp_deviation * 1e3);
+    QCOMPARE(r.status, InstructionStatus::kDone);
+    QVERIFY2(r.path_joint_deviation > 0 && r.path_joint_deviation < 1e-3,
+             qPrintable(QString::number(r.path_joint_deviation)));
+    QVERIFY(r.duration > 0.98 * r.nominal_duration && r.duration < 1.05 * r.nominal_duration + 0.05);
+    QVERIFY(maxDifference(r.q, path.q.back()) < 1e-4);
+    QVERIFY(r.settled);
+  }
+  QVERIFY(report.instructions[0].lead_in > 0.1);
+  QCOMPARE(report.instructions[1].lead_in, 0.0);  // the first ended where the second starts
+  QCOMPARE(cell.krc->krc().status().last_stop, sim::KrcStop::kNone);
+}
+
+// The context lets A5 move 5 deg from where RSI was switched on; a path that takes it 12 deg out is
+// refused before anything moves, naming the first sample beyond the limit by its time in the path.
+void TestExecutorRsi::pathBeyondTheCorrectionLimitsIsRefusedNamingItsTime() {
+  Cell cell("resources/rsi/rci_axis_corr.rsi.xml");
+  const std::array<double, 7> home = cell.start();
+  const JointPath path = demonstration(home, {0, 0, 0, 0, 12, 0}, 2.0);
+  size_t first = 0;
+  while (path.q[first][4] - home[4] <= 5 * kDeg + 1e-9) ++first;
+  Program p = kukaProgram();
+  p.instructions.push_back(pathInstruction(path, 1.0, "reach"));
+  Executor executor;
+  const RunReport report = executor.run(*cell.arm, p, {});
+  QCOMPARE(report.outcome, RunState::kRefused);
+  QCOMPARE(report.problems.size(), size_t(1));
+  char expected[160];
+  std::snprintf(expected, sizeof expected,
+                "instruction 1 (PATH \"reach\"): at t = %.3f s of the path (sample %zu): A5 at %.2f deg is outside what "
+                "this session can reach",
+                double(first) / 100, first, path.q[first][4] / kDeg);
+  QVERIFY2(QString::fromStdString(report.message).contains(expected), qPrintable(QString::fromStdString(report.message) + "\nexpected: " + expected));
+  QVERIFY(maxDifference(cell.actual(), home) < 1e-6);  // nothing moved
 }
 
 QTEST_GUILESS_MAIN(TestExecutorRsi)

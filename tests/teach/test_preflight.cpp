@@ -2,19 +2,26 @@
 // Pre-flight and preview without a robot: every problem of a program is reported by instruction
 // (unreachable pose, joint and soft limits, safety box for targets and paths, degenerate arcs,
 // invalid fields); a clean program gives a TCP polyline per motion; and the executor's time
-// scaling ramps with bounded rate and rate change, without overshoot.
+// scaling ramps with bounded rate and rate change, without overshoot. A PATH is checked sample by
+// sample, naming the first offending one by its time, and its lead-in move is announced.
 #include <QtTest>
 
 #include <cmath>
 
 #include <xmate/model.h>
 
+#include "demonstration.h"
+#include "model/arm_kinematics.h"
+#include "model/robot_spec.h"
+#include "teach/path.h"
 #include "teach/preflight.h"
 #include "teach/recording.h"
 #include "teach/time_scaling.h"
 
 using namespace xmate;
 using namespace xmate::teach;
+using teach_test::demonstration;
+using teach_test::pathInstruction;
 
 namespace {
 
@@ -55,6 +62,27 @@ TraceOptions fromStart() {
 
 QString allMessages(const std::vector<Problem>& problems) { return QString::fromStdString(problemsText(problems)); }
 
+// 2 s from kStart: joint 2 out by 0.6 rad and back, joint 1 across by 0.2 rad.
+JointPath raisingPath() { return demonstration(kStart, {0, 0.6, 0, 0, 0, 0, 0}, {0.2, 0, 0, 0, 0, 0, 0}, 2.0); }
+
+Program pathProgram(const JointPath& path, const std::string& name = "wipe") {
+  Program p;
+  p.instructions.push_back(pathInstruction(path, 1.0, name));
+  return p;
+}
+
+// The first sample whose joint 2 is above `limit`.
+size_t firstAbove(const JointPath& path, double limit) {
+  size_t k = 0;
+  while (k < path.q.size() && path.q[k][1] <= limit) ++k;
+  return k;
+}
+
+// "at t = 0.420 s of the path (sample 42): ": how the pre-flight names a sample of a 100 Hz path.
+QString atSample(size_t k) {
+  return QString("at t = %1 s of the path (sample %2): ").arg(double(k) / 100, 0, 'f', 3).arg(k);
+}
+
 }  // namespace
 
 class TestPreflight : public QObject {
@@ -69,6 +97,10 @@ class TestPreflight : public QObject {
   void timeScalingRampsWithinItsBounds();
   void toolOfTheProgramMustMatchTheRobot();
   void firstRecordingAdoptsTheRobotsTool();
+  void pathIsTracedAndItsLeadInAnnounced();
+  void pathSamplesBeyondALimitAreNamedByTime();
+  void pathOutsideTheBoxIsNamedByTime();
+  void pathTooFastForAnyTimingIsAProblem();
 };
 
 void TestPreflight::cleanProgramPassesWithAPreview() {
@@ -327,6 +359,131 @@ void TestPreflight::firstRecordingAdoptsTheRobotsTool() {
   old.instructions.push_back(moveJ(targetFromState(state, XMATE7_PRO), 0.5));
   QCOMPARE(adoptTool(old, state, toolAt(0.05), load), std::string());
   QVERIFY(!old.has_tool);
+}
+
+// A clean PATH: traced with the TCP of every sample (the 3D view's trace), ending at its last
+// sample; starting elsewhere, the joint move to its start is announced, not a problem.
+void TestPreflight::pathIsTracedAndItsLeadInAnnounced() {
+  const JointPath path = raisingPath();
+  const Program here = pathProgram(path);
+  ProgramTrace trace = traceProgram(here, fromStart());
+  QVERIFY2(trace.problems.empty(), qPrintable(allMessages(trace.problems)));
+  QVERIFY(trace.notices.empty());
+  QVERIFY(trace.instructions[0].traced);
+  QCOMPARE(trace.instructions[0].q_end, path.q.back());
+  QCOMPARE(trace.instructions[0].tcp_path, tcpTrace(path, model::robotSpec(XMATE7_PRO), kIdentityPose));
+
+  TraceOptions elsewhere = fromStart();
+  elsewhere.q_start[0] -= 0.3;
+  elsewhere.q_start[3] += 0.1;
+  trace = traceProgram(here, elsewhere);
+  QVERIFY2(trace.problems.empty(), qPrintable(allMessages(trace.problems)));
+  QCOMPARE(trace.notices.size(), size_t(1));
+  QCOMPARE(trace.notices[0].message, std::string("instruction 1 (PATH \"wipe\"): first moves to the start of the path with "
+                                                 "a joint move (largest joint change 17.2 deg)"));
+  // A lead-in that would leave the safety box is a problem: the box holds the path, not the way there.
+  elsewhere.q_start[0] = kStart[0] - 1.5;
+  elsewhere.has_box = true;
+  elsewhere.box.size = {0.8, 0.8, 0.8};
+  const std::array<double, 16> start_tcp = XmateModel(XMATE7_PRO).GetCartPose(kStart);
+  elsewhere.box.frame[3] = start_tcp[3];
+  elsewhere.box.frame[7] = start_tcp[7];
+  elsewhere.box.frame[11] = start_tcp[11];
+  trace = traceProgram(here, elsewhere);
+  QCOMPARE(trace.problems.size(), size_t(1));
+  QVERIFY2(allMessages(trace.problems)
+               .startsWith("instruction 1 (PATH \"wipe\"): the joint move to the start of the path leaves the Cartesian "
+                           "safety box at ("),
+           qPrintable(allMessages(trace.problems)));
+}
+
+// Soft limits and the joints a session can reach (a KUKA's correction limits): the first sample
+// beyond each is named by its time in the path; a sample beyond the joint range is refused as the
+// program file would refuse it, naming the sample and its time too.
+void TestPreflight::pathSamplesBeyondALimitAreNamedByTime() {
+  const JointPath path = raisingPath();
+  TraceOptions o = fromStart();
+  o.has_soft_limits = true;
+  for (int j = 0; j < 7; ++j) {
+    o.soft_lower[j] = -2.0;
+    o.soft_upper[j] = 2.0;
+  }
+  o.soft_upper[1] = 0.9;
+  std::vector<Problem> problems = preflight(pathProgram(path), o);
+  QCOMPARE(problems.size(), size_t(1));
+  size_t k = firstAbove(path, 0.9);
+  QVERIFY(k > 0 && k < path.q.size());
+  QString expected = "instruction 1 (PATH \"wipe\"): " + atSample(k) +
+                     QString("joint 2 at %1 deg is outside its soft limits [-114.59, 51.57] deg").arg(path.q[k][1] * 180 / M_PI, 0, 'f', 2);
+  QVERIFY2(allMessages(problems).startsWith(expected), qPrintable(allMessages(problems) + "\nexpected: " + expected));
+
+  TraceOptions bounds = fromStart();
+  bounds.has_joint_bounds = true;
+  for (int j = 0; j < 7; ++j) {
+    bounds.joint_lower[j] = -2.0;
+    bounds.joint_upper[j] = 2.0;
+  }
+  bounds.joint_upper[1] = 1.0;
+  problems = preflight(pathProgram(path), bounds);
+  QCOMPARE(problems.size(), size_t(1));
+  k = firstAbove(path, 1.0);
+  expected = "instruction 1 (PATH \"wipe\"): " + atSample(k) + "joint 2 at ";
+  QVERIFY2(allMessages(problems).startsWith(expected) && allMessages(problems).contains("outside what this session can reach"),
+           qPrintable(allMessages(problems) + "\nexpected: " + expected));
+
+  // Beyond joint 2's 120 deg: refused as the file format refuses it.
+  const JointPath beyond = demonstration(kStart, {0, 1.8, 0, 0, 0, 0, 0}, {}, 2.0);
+  problems = preflight(pathProgram(beyond), fromStart());
+  QCOMPARE(problems.size(), size_t(1));
+  k = firstAbove(beyond, model::robotSpec(XMATE7_PRO).q_max[1]);
+  const QString text = allMessages(problems);
+  QVERIFY2(text.startsWith("instruction 1 (PATH") &&
+               text.contains(QString("(sample %1, t = %2 s of the path)").arg(k).arg(double(k) / 100, 0, 'f', 3)),
+           qPrintable(text));
+}
+
+// The TCP (by forward kinematics with the program's tool) of the first sample outside the box.
+void TestPreflight::pathOutsideTheBoxIsNamedByTime() {
+  const JointPath path = raisingPath();
+  model::ArmKinematics fk(model::robotSpec(XMATE7_PRO));
+  // The box's edge halfway along the path's largest excursion of the TCP from its start (x, y or z).
+  const std::array<double, 16> start = fk.GetCartPose(kStart);
+  int axis = 0;
+  double excursion = 0;
+  for (const JointPoint& q : path.q) {
+    const std::array<double, 16> p = fk.GetCartPose(q);
+    for (int a = 0; a < 3; ++a)
+      if (std::abs(p[4 * a + 3] - start[4 * a + 3]) > std::abs(excursion)) {
+        axis = a;
+        excursion = p[4 * a + 3] - start[4 * a + 3];
+      }
+  }
+  QVERIFY2(std::abs(excursion) > 0.05, "the path's TCP hardly moves");
+  const double edge = start[4 * axis + 3] + excursion / 2;
+  TraceOptions o = fromStart();
+  o.has_box = true;
+  o.box.size = {2, 2, 2};
+  for (int a = 0; a < 3; ++a) o.box.frame[4 * a + 3] = start[4 * a + 3];
+  o.box.frame[4 * axis + 3] = edge - std::copysign(1.0, excursion);
+  size_t k = 0;
+  while (k < path.q.size() && std::abs(fk.GetCartPose(path.q[k])[4 * axis + 3] - start[4 * axis + 3]) <= std::abs(excursion) / 2)
+    ++k;
+  const std::vector<Problem> problems = preflight(pathProgram(path), o);
+  QCOMPARE(problems.size(), size_t(1));
+  const QString expected = "instruction 1 (PATH \"wipe\"): " + atSample(k) + "the TCP at (";
+  QVERIFY2(allMessages(problems).startsWith(expected) && allMessages(problems).contains("outside the Cartesian safety box"),
+           qPrintable(allMessages(problems) + "\nexpected: " + expected));
+}
+
+// Two samples 1 ms apart and 1 rad apart: no timing within the limits exists.
+void TestPreflight::pathTooFastForAnyTimingIsAProblem() {
+  JointPath jump;
+  jump.rate_hz = 1000;
+  jump.q = {kStart, kStart};
+  jump.q[1][0] += 1.0;
+  const std::vector<Problem> problems = preflight(pathProgram(jump, "jump"), fromStart());
+  QCOMPARE(problems.size(), size_t(1));
+  QVERIFY2(allMessages(problems).startsWith("instruction 1 (PATH \"jump\"): "), qPrintable(allMessages(problems)));
 }
 
 int runPreflightTests(int argc, char** argv) {

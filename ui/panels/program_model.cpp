@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // ProgramModel: the instruction table of the Program panel -- display, in-place edits (type, name,
-// speed), structural edits and drag & drop reordering of a teach::Program.
+// speed), structural edits and drag & drop reordering of a teach::Program, and the last run's
+// result per instruction.
 #include "panels/program_model.h"
 
 #include <QBrush>
@@ -9,6 +10,7 @@
 #include <QSet>
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 namespace rci::ui {
@@ -32,6 +34,18 @@ QString position(const Target& t) {
   return QStringLiteral("q = [%1] deg").arg(deg.join(QStringLiteral(", ")));
 }
 
+// FNV-1a over raw bytes: the key under which a PATH's summary is remembered.
+quint64 hashBytes(quint64 hash, const void* data, size_t size) {
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  return hash;
+}
+
+// Only the moves to a taught target have one (a PATH has its samples instead).
+bool hasTarget(InstructionType type) {
+  return type == InstructionType::kMoveJ || type == InstructionType::kMoveL || type == InstructionType::kMoveC;
+}
+
 }  // namespace
 
 ProgramModel::ProgramModel(QObject* parent) : QAbstractTableModel(parent) {}
@@ -40,6 +54,7 @@ void ProgramModel::setProgram(const xmate::teach::Program& program, bool as_edit
   beginResetModel();
   program_ = program;
   current_ = -1;
+  clearResults();
   endResetModel();
   if (as_edit) emit edited();
 }
@@ -49,6 +64,7 @@ void ProgramModel::insert(int row, const Instruction& instruction) {
   beginInsertRows({}, row, row);
   program_.instructions.insert(program_.instructions.begin() + row, instruction);
   endInsertRows();
+  clearResults();
   emit edited();
 }
 
@@ -57,6 +73,7 @@ bool ProgramModel::remove(int row) {
   beginRemoveRows({}, row, row);
   program_.instructions.erase(program_.instructions.begin() + row);
   endRemoveRows();
+  clearResults();
   emit edited();
   return true;
 }
@@ -70,6 +87,7 @@ bool ProgramModel::move(int from, int to) {
   list.erase(list.begin() + from);
   list.insert(list.begin() + to, std::move(moved));
   endMoveRows();
+  clearResults();
   emit edited();
   return true;
 }
@@ -77,13 +95,13 @@ bool ProgramModel::move(int from, int to) {
 bool ProgramModel::duplicate(int row) {
   if (row < 0 || row >= count()) return false;
   Instruction copy = instruction(row);
-  if (!copy.name.empty()) copy.name = nextName().toStdString();
+  if (!copy.name.empty()) copy.name = nextName(namePrefix(copy.type)).toStdString();
   insert(row + 1, copy);
   return true;
 }
 
 bool ProgramModel::replaceTarget(int row, const Target& target) {
-  if (row < 0 || row >= count() || !xmate::teach::isMotion(instruction(row).type)) return false;
+  if (row < 0 || row >= count() || !hasTarget(instruction(row).type)) return false;
   program_.instructions[size_t(row)].target = target;
   emit dataChanged(index(row, 0), index(row, kColumnCount - 1));
   emit edited();
@@ -111,7 +129,7 @@ bool ProgramModel::replaceLogic(int row, const Instruction& logic) {
 }
 
 bool ProgramModel::canChangeType(const Instruction& in, InstructionType to) {
-  if (!xmate::teach::isMotion(in.type) || !xmate::teach::isMotion(to)) return false;
+  if (!hasTarget(in.type) || !hasTarget(to)) return false;
   return to != InstructionType::kMoveC || in.type == InstructionType::kMoveC;
 }
 
@@ -134,13 +152,49 @@ void ProgramModel::setCurrent(int row) {
     if (r >= 0 && r < count()) emit dataChanged(index(r, 0), index(r, kColumnCount - 1), {Qt::BackgroundRole});
 }
 
-QString ProgramModel::nextName() const {
+QString ProgramModel::nextName(const QString& prefix) const {
   QSet<QString> used;
   for (const auto& in : program_.instructions) used.insert(QString::fromStdString(in.name));
   for (int n = 1;; ++n) {
-    const QString name = QStringLiteral("P%1").arg(n);
+    const QString name = prefix + QString::number(n);
     if (!used.contains(name)) return name;
   }
+}
+
+QString ProgramModel::namePrefix(InstructionType type) {
+  return type == InstructionType::kPath ? QStringLiteral("Path ") : QStringLiteral("P");
+}
+
+void ProgramModel::setResults(const QStringList& per_row) {
+  results_ = per_row;
+  if (count() > 0) emit dataChanged(index(0, 0), index(count() - 1, kColumnCount - 1), {Qt::ToolTipRole});
+}
+
+void ProgramModel::clearResults() { results_.clear(); }
+
+QString ProgramModel::pathDetails(const xmate::teach::JointPath& path) const {
+  quint64 key = 1469598103934665603ull;
+  key = hashBytes(key, &path.rate_hz, sizeof path.rate_hz);
+  key = hashBytes(key, path.q.data(), path.q.size() * sizeof(xmate::teach::JointPoint));
+  key = hashBytes(key, program_.tool.data(), sizeof program_.tool);
+  key = hashBytes(key, &program_.robot, sizeof program_.robot);
+  if (auto it = path_details_.constFind(key); it != path_details_.constEnd()) return *it;
+  QString text;
+  try {
+    const xmate::teach::PathSummary s = xmate::teach::summarizePath(path, *program_.robot, program_.tool);
+    text = QStringLiteral("%1 s \u00b7 %2 m TCP \u00b7 %3 samples @ %4 Hz")
+               .arg(s.duration, 0, 'f', 1)
+               .arg(s.tcp_length, 0, 'f', 2)
+               .arg(s.samples)
+               .arg(QString::number(path.rate_hz, 'g', 6));
+  } catch (const std::exception& e) {  // a path the loader would refuse (too short): say so, do not guess
+    text = QStringLiteral("%1 samples @ %2 Hz (%3)")
+               .arg(path.q.size())
+               .arg(QString::number(path.rate_hz, 'g', 6), QString::fromStdString(e.what()));
+  }
+  if (path_details_.size() > 256) path_details_.clear();  // programs rarely hold that many paths
+  path_details_.insert(key, text);
+  return text;
 }
 
 QString ProgramModel::details(const Instruction& in) const {
@@ -160,6 +214,8 @@ QString ProgramModel::details(const Instruction& in) const {
       return QStringLiteral("until %1 = %2, timeout %3 ms")
           .arg(QString::fromStdString(xmate::teach::diName(family, in.signal)), in.value ? QStringLiteral("on") : QStringLiteral("off"))
           .arg(in.timeout_ms);
+    case InstructionType::kPath:
+      return pathDetails(in.path);
   }
   return {};
 }
@@ -175,7 +231,10 @@ QVariant ProgramModel::data(const QModelIndex& index, int role) const {
     return index.row() == current_ ? QVariant(QBrush(QColor(255, 214, 120))) : QVariant();
   if (role == Qt::TextAlignmentRole && (index.column() == kIndex || index.column() == kSpeed))
     return int(Qt::AlignRight | Qt::AlignVCenter);
-  if (role == Qt::ToolTipRole) return details(in);
+  if (role == Qt::ToolTipRole) {
+    const QString last = result(index.row());
+    return last.isEmpty() ? details(in) : details(in) + QStringLiteral("\n") + tr("Last run: %1").arg(last);
+  }
   if (role != Qt::DisplayRole && role != Qt::EditRole) return {};
   switch (index.column()) {
     case kIndex: return index.row() + 1;
@@ -204,9 +263,10 @@ QVariant ProgramModel::headerData(int section, Qt::Orientation orientation, int 
 Qt::ItemFlags ProgramModel::flags(const QModelIndex& index) const {
   if (!index.isValid()) return Qt::ItemIsDropEnabled;
   Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled | Qt::ItemIsDragEnabled;
-  const bool motion = xmate::teach::isMotion(instruction(index.row()).type);
-  if (index.column() == kName || (motion && (index.column() == kType || index.column() == kSpeed)))
-    f |= Qt::ItemIsEditable;
+  const InstructionType type = instruction(index.row()).type;
+  const bool editable = index.column() == kName || (xmate::teach::isMotion(type) && index.column() == kSpeed) ||
+                        (hasTarget(type) && index.column() == kType);
+  if (editable) f |= Qt::ItemIsEditable;
   return f;
 }
 

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // ProgramModel: the Program panel's table of instructions (issue 5) -- owns the teach::Program being
 // edited and offers the edits the panel needs (insert, delete, move, duplicate, type, speed, name,
-// touch-up of target or via, logic parameters), drag & drop reordering, and the highlight of the instruction that runs.
+// touch-up of target or via, logic parameters), drag & drop reordering, the highlight of the instruction that runs,
+// and what the last run reported for each instruction (tooltip).
 #pragma once
 
 #include <QAbstractTableModel>
+#include <QHash>
+#include <QStringList>
 
 #include "teach/program.h"
 
@@ -28,12 +31,12 @@ class ProgramModel : public QAbstractTableModel {
   bool remove(int row);
   bool move(int from, int to);  // to: the row the instruction ends up at
   bool duplicate(int row);      // the copy goes right after the original
-  bool replaceTarget(int row, const xmate::teach::Target& target);
+  bool replaceTarget(int row, const xmate::teach::Target& target);  // MOVEJ / MOVEL / MOVEC rows only
   bool replaceVia(int row, const xmate::teach::Target& via);  // MOVEC rows only
   // Replaces a logic instruction (WAIT, SET_DO, WAIT_DI) with another one, keeping its name.
   bool replaceLogic(int row, const xmate::teach::Instruction& logic);
   // MOVEJ <-> MOVEL always; MOVEC -> MOVEJ/MOVEL drops the via point; nothing becomes MOVEC (it needs
-  // a via point: record one as C).
+  // a via point: record one as C). A PATH keeps its type, and nothing becomes one (it is recorded).
   static bool canChangeType(const xmate::teach::Instruction& in, xmate::teach::InstructionType to);
   bool changeType(int row, xmate::teach::InstructionType to);
 
@@ -41,10 +44,17 @@ class ProgramModel : public QAbstractTableModel {
   void setCurrent(int row);
   int current() const { return current_; }
 
-  // "P<n>" with the smallest n not used by a name yet.
-  QString nextName() const;
+  // "<prefix><n>" ("P3", "Path 2") with the smallest n not used by a name yet.
+  QString nextName(const QString& prefix = QStringLiteral("P")) const;
+  // The prefix new names of an instruction of this type take: "Path " for PATH, else "P".
+  static QString namePrefix(xmate::teach::InstructionType type);
   // One line describing an instruction: its targets or its parameters.
   QString details(const xmate::teach::Instruction& in) const;  // signals named as on the program's robot
+
+  // What the last run said about each instruction (one line per row, "" for none), shown in the
+  // row's tooltip. Cleared by any edit that moves rows or changes the program (it no longer applies).
+  void setResults(const QStringList& per_row);
+  QString result(int row) const { return row >= 0 && row < results_.size() ? results_[row] : QString(); }
 
   // QAbstractTableModel
   int rowCount(const QModelIndex& parent = {}) const override;
@@ -64,8 +74,15 @@ class ProgramModel : public QAbstractTableModel {
   void edited();
 
  private:
+  // A PATH's summary ("8.2 s · 0.63 m TCP · 820 samples @ 100 Hz"): forward kinematics over every
+  // sample, so remembered by the path's content and the program's tool (the table paints often).
+  QString pathDetails(const xmate::teach::JointPath& path) const;
+  void clearResults();
+
   xmate::teach::Program program_;
   int current_ = -1;
+  QStringList results_;
+  mutable QHash<quint64, QString> path_details_;
 };
 
 }  // namespace rci::ui

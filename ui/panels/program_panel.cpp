@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Program panel: layout, recording waypoints (button, F9, DI trigger; C takes via then target), and
-// editing the instruction list (reorder, delete, duplicate, type, speed, name, touch-up, logic insert/apply).
+// Program panel: layout, recording waypoints (button, F9, DI trigger; C takes via then target; P
+// starts and stops the recording of a path: program_panel_path.cpp), and editing the instruction
+// list (reorder, delete, duplicate, type, speed, name, touch-up, logic insert/apply).
 #include "panels/program_panel.h"
 
 #include <QAction>
@@ -42,7 +43,7 @@ using xmate::teach::InstructionType;
 namespace {
 
 // Record types of the Teach group (combo data).
-enum RecordKind { kRecordJ, kRecordL, kRecordC };
+enum RecordKind { kRecordJ, kRecordL, kRecordC, kRecordPath };
 
 // Type column: a combo with the types the instruction may become.
 class TypeDelegate : public QStyledItemDelegate {
@@ -110,6 +111,7 @@ ProgramPanel::ProgramPanel(Session& session, QWidget* parent)
     updateOverlay();
   });
   connect(&session, &Session::motionFinished, this, &ProgramPanel::runFinished);
+  connect(&session, &Session::armSamplesArrived, this, &ProgramPanel::takeArmSamples);
   newProgram();
 }
 
@@ -176,7 +178,9 @@ QWidget* ProgramPanel::buildTeachGroup() {
   record_type_->addItem(tr("J — joint move (MOVEJ)"), kRecordJ);
   record_type_->addItem(tr("L — straight line (MOVEL)"), kRecordL);
   record_type_->addItem(tr("C — arc (MOVEC): via, then target"), kRecordC);
-  record_type_->setToolTip(tr("How the robot will move to the recorded waypoint"));
+  record_type_->addItem(tr("P — demonstrated path (PATH)"), kRecordPath);
+  record_type_->setToolTip(tr("How the robot will move to the recorded waypoint; P records the path itself while you "
+                              "guide the arm, and replays it as demonstrated"));
   compactCombo(record_type_, 14);
   record_speed_ = new QSpinBox(group);
   record_speed_->setObjectName(QStringLiteral("program.recordSpeed"));
@@ -216,6 +220,7 @@ QWidget* ProgramPanel::buildTeachGroup() {
   });
   connect(record_, &QPushButton::clicked, this, &ProgramPanel::record);
   connect(record_type_, &QComboBox::currentIndexChanged, this, &ProgramPanel::cancelPendingVia);
+  connect(record_type_, &QComboBox::currentIndexChanged, this, &ProgramPanel::updateRecordButton);
   connect(di_trigger_, &QComboBox::currentIndexChanged, this, &ProgramPanel::resetDiTrigger);
   connect(record_speed_, &QSpinBox::valueChanged, this, [this](int v) { saveValue(QStringLiteral("recordSpeed"), v); });
   return group;
@@ -273,12 +278,15 @@ QLayout* ProgramPanel::buildEditRows(QWidget* group) {
   auto* down = makeButton(QStringLiteral("program.down"), tr("Down"), tr("Move the selected instruction down"), group);
   auto* dup = makeButton(QStringLiteral("program.duplicate"), tr("Duplicate"), tr("Copy the selected instruction"), group);
   auto* del = makeButton(QStringLiteral("program.delete"), tr("Delete"), tr("Delete the selected instruction"), group);
-  auto* touch = makeButton(QStringLiteral("program.touchup"), tr("Touch up"),
-                           tr("Replace the selected waypoint's target with the robot's current pose"), group);
+  touch_ = makeButton(QStringLiteral("program.touchup"), tr("Touch up"),
+                      tr("Replace the selected waypoint's target with the robot's current pose"), group);
+  auto* touch = touch_;
   touch_via_ = makeButton(QStringLiteral("program.touchupVia"), tr("Touch up via"),
                           tr("Replace the selected MOVEC's via point with the robot's current pose"), group);
   auto* go = makeButton(QStringLiteral("program.goto"), tr("Go to"),
-                        tr("Move to the selected waypoint with a joint move (MOVEJ) at no more than 20 % speed"), group);
+                        tr("Move to the selected waypoint (a path: its first sample) with a joint move (MOVEJ) at "
+                           "no more than 20 % speed"),
+                        group);
   auto* rows = new QGridLayout;
   int column = 0;
   for (auto* b : {up, down, dup, del}) {
@@ -472,25 +480,12 @@ void ProgramPanel::selectRow(int row) {
 }
 
 void ProgramPanel::record() {
-  if (!haveLiveState()) {
-    showStatus(tr("Record: no robot state — connect to a robot or the simulator first."), true);
+  if (record_type_->currentData().toInt() == kRecordPath) {
+    if (isRecordingPath()) stopPathRecording();
+    else startPathRecording();
     return;
   }
-  if (running_) {
-    showStatus(tr("Record: a run is active — stop it first."), true);
-    return;
-  }
-  if (model_->count() > 0 && program().robot != &spec()) {
-    showStatus(tr("Record: this program is for another robot model than the one connected — start a new "
-                  "program (New) to teach this robot."),
-               true);
-    return;
-  }
-  if (model_->count() == 0 && program().robot != &spec()) {
-    xmate::teach::Program empty;
-    empty.robot = &spec();
-    model_->setProgram(empty);
-  }
+  if (!mayRecord()) return;
   if (!teachWithRobotTool(tr("Record"))) return;
   const xmate::teach::Target target = livePose();
   const int kind = record_type_->currentData().toInt();
@@ -515,6 +510,48 @@ void ProgramPanel::record() {
            .arg(QString::fromStdString(name), QLatin1String(xmate::teach::typeName(in.type)))
            .arg(row + 1),
        false);
+}
+
+bool ProgramPanel::mayRecord() {
+  if (!haveLiveState()) {
+    showStatus(tr("Record: no robot state — connect to a robot or the simulator first."), true);
+    return false;
+  }
+  if (running_) {
+    showStatus(tr("Record: a run is active — stop it first."), true);
+    return false;
+  }
+  if (model_->count() > 0 && program().robot != &spec()) {
+    showStatus(tr("Record: this program is for another robot model than the one connected — start a new "
+                  "program (New) to teach this robot."),
+               true);
+    return false;
+  }
+  if (model_->count() == 0 && program().robot != &spec()) {
+    xmate::teach::Program empty;
+    empty.robot = &spec();
+    model_->setProgram(empty);
+  }
+  return true;
+}
+
+void ProgramPanel::updateRecordButton() {
+  const bool path = record_type_->currentData().toInt() == kRecordPath;
+  if (isRecordingPath()) {
+    record_->setText(tr("Stop recording path (F9)"));
+    record_->setToolTip(tr("End the recording: the path becomes a PATH instruction after the selected one"));
+  } else if (path) {
+    record_->setText(tr("Start recording path (F9)"));
+    record_->setToolTip(tr("Record every joint position while you guide the arm, until you press it again; idle "
+                           "stretches at the start and end are trimmed"));
+  } else {
+    record_->setText(tr("Record waypoint (F9)"));
+    record_->setToolTip(tr("Record the robot's current joints, TCP pose and arm angle as a waypoint, inserted "
+                           "after the selected instruction"));
+  }
+  record_action_->setText(record_->text().remove(QStringLiteral(" (F9)")));
+  // A PATH replays at the demonstrated pace (its speed is edited in the list afterwards).
+  record_speed_->setEnabled(!path);
 }
 
 bool ProgramPanel::teachWithRobotTool(const QString& action) {
@@ -694,24 +731,29 @@ void ProgramPanel::updateTitle() {
 void ProgramPanel::updateButtons() {
   const int row = selectedRow();
   const bool motion = row >= 0 && xmate::teach::isMotion(model_->instruction(row).type);
+  const bool path = row >= 0 && model_->instruction(row).type == InstructionType::kPath;
+  const bool recording = isRecordingPath();
   const auto state = run_slot_->executor.progress().state;
   const bool paused = running_ && state == xmate::teach::RunState::kPaused;
   const bool moving = running_ && (state == xmate::teach::RunState::kRunning || state == xmate::teach::RunState::kChecking);
   for (auto* b : edit_buttons_) b->setEnabled(row >= 0 && !running_);
   edit_buttons_[0]->setEnabled(row > 0 && !running_);
   edit_buttons_[1]->setEnabled(row >= 0 && row + 1 < model_->count() && !running_);
-  for (auto* b : live_buttons_) b->setEnabled(motion && haveLiveState() && !running_);
+  for (auto* b : live_buttons_) b->setEnabled(motion && haveLiveState() && !running_ && !recording);
+  touch_->setEnabled(touch_->isEnabled() && !path);  // a PATH is re-recorded, not touched up
   touch_via_->setEnabled(motion && model_->instruction(row).type == InstructionType::kMoveC && haveLiveState() &&
                          !running_);
   apply_logic_->setEnabled(row >= 0 && !motion && !running_);
   record_->setEnabled(haveLiveState() && !running_);
+  record_type_->setEnabled(!recording);  // the recording ends as the kind it started
   // The list is read-only while a run highlights its instructions.
   list_->setEditTriggers(running_ ? QAbstractItemView::NoEditTriggers
                                   : QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                                         QAbstractItemView::SelectedClicked);
   list_->setDragEnabled(!running_);
-  run_->setEnabled(isOpen() && model_->count() > 0 && !running_);
-  step_->setEnabled(isOpen() && model_->count() > 0 && (!running_ || (paused && !goto_run_)));
+  // Recording a path and running exclude each other.
+  run_->setEnabled(isOpen() && model_->count() > 0 && !running_ && !recording);
+  step_->setEnabled(isOpen() && model_->count() > 0 && !recording && (!running_ || (paused && !goto_run_)));
   pause_->setEnabled(moving);
   resume_->setEnabled(paused);
   stop_->setEnabled(running_);

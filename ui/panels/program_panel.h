@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Program panel (issue 5, "In the window"): teach by recording waypoints (button, F9, DI trigger) as
-// MOVEJ / MOVEL / MOVEC, edit the instruction list, go to a waypoint, run / pause / resume / step /
+// MOVEJ / MOVEL / MOVEC or a demonstrated path as PATH (issue 13), edit the instruction list, go to a waypoint, run / pause / resume / step /
 // stop the program with the teach executor (teach/executor.h) through Session::runMotion, open and
 // save program files, and show the waypoints and the planned path in the 3D view (programOverlay).
 #pragma once
@@ -9,12 +9,15 @@
 #include <QString>
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "panels/panel_base.h"
 #include "session/session.h"
 #include "teach/executor.h"
+#include "teach/path.h"
 #include "teach/preflight.h"
 #include "teach/program.h"
 
@@ -65,6 +68,8 @@ class ProgramPanel : public PanelBase {
   // The report of the last run or go-to (outcome kIdle before the first).
   const xmate::teach::RunReport& lastReport() const { return last_report_; }
   bool isRunning() const { return running_; }
+  // True between the start and the stop of a path recording (Move type PATH). GUI thread.
+  bool isRecordingPath() const { return path_recorder_ != nullptr; }
   // True while the pre-flight behind the planned path and the problem list runs on its worker.
   bool isTracing() const;
 
@@ -91,6 +96,9 @@ class ProgramPanel : public PanelBase {
 
   // Teaching and editing (program_panel.cpp).
   void record();
+  // Checks shared by every recording: a robot state, no run, a program for this model (an empty
+  // one switches to it). False (and the reason shown) when recording may not start.
+  bool mayRecord();
   // Before a pose is taught: the first one records the robot's tool and load in the program; later
   // ones need the robot's TCP to match it. False (and the reason shown) when it does not.
   bool teachWithRobotTool(const QString& action);
@@ -117,6 +125,27 @@ class ProgramPanel : public PanelBase {
   xmate::teach::Target livePose() const;
   // The DI-trigger list: the connected arm's inputs (the xMate's when none is connected).
   void fillDiTrigger();
+  // The Record button's text for the move type and whether a path is being recorded.
+  void updateRecordButton();
+
+  // Recording a demonstrated path (program_panel_path.cpp).
+  void startPathRecording();
+  // Ends the recording: the path becomes a PATH instruction after the selection (or the operator is
+  // told why not); `why` is said in the message when the recording ended without the operator.
+  void stopPathRecording(const QString& why = QString());
+  // Every sample of the arm's stream while recording (Session::armSamplesArrived).
+  void takeArmSamples(const xmate::arm::ArmSample* samples, int count);
+  void showRecordingState();
+  // Cycles lost so far: the recorder's gaps plus what the arm's sample ring dropped since the start.
+  uint64_t lostSinceStart() const;
+  // The tool a PATH records in a program that has none yet (adoptTool); never refuses.
+  void adoptToolForPath();
+  // The last run's result of each instruction, in words, for the list's tooltips and the event log
+  // (program_panel_path.cpp: a PATH's deviation and slow-down).
+  QStringList instructionResults(const xmate::teach::RunReport& report) const;
+  // After a finished run: each PATH's result in the event log, and the largest deviation and
+  // slow-down of them in the status line.
+  void reportPaths(const xmate::teach::RunReport& report);
 
   // Files (program_panel_files.cpp).
   void openClicked();
@@ -136,7 +165,11 @@ class ProgramPanel : public PanelBase {
   xmate::teach::TraceOptions traceOptions() const;
   void runFinished(const QString& label, bool ok, const QString& message);
   void showReport(const xmate::teach::RunReport& report);
-  void showProblems(const std::vector<xmate::teach::Problem>& problems);
+  // The pre-flight's problems (red) and what it announces (a PATH's move to its start).
+  void showProblems(const std::vector<xmate::teach::Problem>& problems,
+                    const std::vector<xmate::teach::Problem>& notices = {});
+  // The 3D view: the planned path of the last trace, then the path being recorded.
+  void publishOverlay();
   void updateProgress();
   void resetRunDisplay();  // after New / Open: no run of this program yet
   // The overlay's waypoints at once; its planned path and the pre-flight problems from a trace on a
@@ -155,6 +188,7 @@ class ProgramPanel : public PanelBase {
 
   ProgramModel* model_ = nullptr;
   ProgramOverlay overlay_;  // what the 3D view shows of the program
+  std::vector<std::array<double, 3>> planned_path_;  // the last trace's TCP path (m)
   QFutureWatcher<xmate::teach::ProgramTrace>* trace_watcher_ = nullptr;
   bool trace_again_ = false;
   // Where the last trace started (joints, measured TCP): the trace follows the robot once it rests
@@ -179,6 +213,18 @@ class ProgramPanel : public PanelBase {
   bool last_di_ = false;
   bool di_known_ = false;
 
+  // Path recording: the recorder while recording (null otherwise), the arm's drop counter when it
+  // started (and last seen), the TCP trace shown in the 3D view (one point per kTracePeriod).
+  std::unique_ptr<xmate::teach::PathRecorder> path_recorder_;
+  uint64_t dropped_at_start_ = 0;
+  uint64_t dropped_now_ = 0;
+  std::vector<std::array<double, 3>> recording_trace_;
+  size_t trace_every_ = 1;     // samples per trace point
+  size_t trace_counter_ = 0;
+  bool path_has_tool_ = false; // the tool adopted when the recording started (adoptTool)
+  std::array<double, 16> path_tool_{};
+  xmate::teach::Payload path_load_;
+
   // List
   QLabel* file_label_ = nullptr;
   QTableView* list_ = nullptr;
@@ -191,6 +237,7 @@ class ProgramPanel : public PanelBase {
   QPushButton* touch_via_ = nullptr;
   QList<QPushButton*> edit_buttons_;   // need a selection, disabled while running
   QList<QPushButton*> live_buttons_;   // need a selection and the robot's state (touch-up, go to)
+  QPushButton* touch_ = nullptr;       // Touch up: a move to a taught target only (not a PATH)
 
   // Run
   QPushButton* run_ = nullptr;

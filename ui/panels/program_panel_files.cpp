@@ -58,6 +58,10 @@ void ProgramPanel::newClicked() {
     showStatus(tr("New: a run is active — stop it first."), true);
     return;
   }
+  if (isRecordingPath()) {
+    showStatus(tr("New: a path is being recorded — press Stop recording path (F9) first."), true);
+    return;
+  }
   if (!maybeSaveProgram()) return;
   newProgram();
   showStatus(tr("New program."), false);
@@ -79,6 +83,10 @@ void ProgramPanel::newProgram() {
 void ProgramPanel::openClicked() {
   if (running_) {
     showStatus(tr("Open: a run is active — stop it first."), true);
+    return;
+  }
+  if (isRecordingPath()) {
+    showStatus(tr("Open: a path is being recorded — press Stop recording path (F9) first."), true);
     return;
   }
   if (!maybeSaveProgram()) return;

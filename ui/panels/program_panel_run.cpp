@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Program panel: running the program with the teach executor through Session::runArmMotion -- run,
 // step, pause, resume, stop, go to a waypoint, the progress display, the pre-flight problems and
-// the 3D view's program overlay (waypoints and planned path).
+// the 3D view's program overlay (waypoints, the planned path and the path being recorded).
 #include <QBrush>
 #include <QComboBox>
 #include <QLabel>
@@ -19,6 +19,7 @@
 #include <xmate/model.h>
 
 #include "arm/arm.h"
+#include "arm/rsi_arm.h"
 #include "model/arm_kinematics.h"
 #include "panels/fields.h"
 #include "panels/lamp.h"
@@ -76,9 +77,19 @@ void ProgramPanel::gotoClicked() {
     return;
   }
   const auto& in = model_->instruction(row);
+  xmate::teach::Target target = in.target;
+  if (in.type == xmate::teach::InstructionType::kPath) {  // a path: where it starts
+    if (in.path.q.empty()) {
+      showStatus(tr("Go to: the path has no samples — record it again."), true);
+      return;
+    }
+    target = xmate::teach::Target{};
+    target.has_q = true;
+    target.q = in.path.q.front();
+  }
   xmate::teach::Program one;
   one.robot = program().robot;
-  one.instructions.push_back(xmate::teach::moveJ(in.target, std::min(in.speed, kGotoSpeed), in.name));
+  one.instructions.push_back(xmate::teach::moveJ(target, std::min(in.speed, kGotoSpeed), in.name));
   startRun(one, false, tr("go to instruction %1").arg(row + 1));
 }
 
@@ -89,6 +100,10 @@ void ProgramPanel::startRun(const xmate::teach::Program& program, bool single_st
   }
   if (!isOpen()) {
     showStatus(tr("%1: not connected — connect to a robot or the simulator first.").arg(action), true);
+    return;
+  }
+  if (isRecordingPath()) {
+    showStatus(tr("%1: a path is being recorded — press Stop recording path (F9) first.").arg(action), true);
     return;
   }
   xmate::teach::ExecutorOptions options = executorOptions();
@@ -143,6 +158,9 @@ xmate::teach::TraceOptions ProgramPanel::traceOptions() const {
   options.soft_upper = e.soft_upper;
   options.has_box = e.has_box;
   options.box = e.box;
+  // On a KUKA the joints a PATH may reach: the RSI start pose plus the correction limits.
+  if (xmate::arm::RsiArm* rsi = session().rsiArm())
+    options.has_joint_bounds = rsi->stream().reachableBounds(options.joint_lower, options.joint_upper);
   return options;
 }
 
@@ -175,6 +193,7 @@ void ProgramPanel::runFinished(const QString& label, bool ok, const QString& mes
     showFailure(action, message);
   } else {
     last_report_ = run_slot_->report;
+    if (!goto_run_) model_->setResults(instructionResults(last_report_));
     showReport(last_report_);
   }
   updateButtons();
@@ -190,6 +209,7 @@ void ProgramPanel::showReport(const xmate::teach::RunReport& report) {
       progress_->setFormat(tr("Done"));
       showStatus(tr("%1 finished in %2 s.").arg(what).arg(report.duration, 0, 'f', 1), false);
       session().reportEvent(Session::EventLevel::kInfo, title() + QStringLiteral(": ") + statusLine()->text());
+      if (!goto_run_) reportPaths(report);
       break;
     case RunState::kStopped:
       progress_->setFormat(tr("Stopped"));
@@ -217,7 +237,8 @@ void ProgramPanel::showReport(const xmate::teach::RunReport& report) {
   }
 }
 
-void ProgramPanel::showProblems(const std::vector<xmate::teach::Problem>& problems) {
+void ProgramPanel::showProblems(const std::vector<xmate::teach::Problem>& problems,
+                                const std::vector<xmate::teach::Problem>& notices) {
   problems_->clear();
   for (const auto& p : problems) {
     auto* item = new QListWidgetItem(text::programProblem(p.message), problems_);
@@ -225,8 +246,20 @@ void ProgramPanel::showProblems(const std::vector<xmate::teach::Problem>& proble
     item->setData(Qt::UserRole, int(p.instruction));
     item->setForeground(QBrush(lampRed()));
   }
-  problems_label_->setVisible(!problems.empty());
-  problems_->setVisible(!problems.empty());
+  for (const auto& n : notices) {  // in the normal colour: nothing is wrong
+    auto* item = new QListWidgetItem(text::programProblem(n.message), problems_);
+    item->setToolTip(QString::fromStdString(n.message));
+    item->setData(Qt::UserRole, int(n.instruction));
+  }
+  problems_label_->setText(problems.empty() ? tr("Pre-flight notes (nothing wrong; read before you run):")
+                                            : tr("Pre-flight problems (nothing moves while there are any):"));
+  const bool any = !problems.empty() || !notices.empty();
+  // As tall as a wrapped line or two per entry, at most four lines: the instruction list below keeps
+  // its room when there is only a note.
+  const int lines = std::min(4, 2 * problems_->count());
+  problems_->setFixedHeight(problems_->fontMetrics().lineSpacing() * std::max(lines, 2) + 8);
+  problems_label_->setVisible(any);
+  problems_->setVisible(any);
 }
 
 void ProgramPanel::resetRunDisplay() {
@@ -286,6 +319,8 @@ void ProgramPanel::sessionClosed() {
     showStatus(tr("The run ended: the connection closed. Connect again, then run or step from the start."), true);
   }
   cancelPendingVia();
+  // What the operator demonstrated so far is kept: the recording ends with it.
+  if (isRecordingPath()) stopPathRecording(tr("the connection closed"));
   updateButtons();
 }
 
@@ -304,9 +339,10 @@ void ProgramPanel::updateOverlay() {
   // and that one problem instead of what tracing it on this arm would say.
   if (const std::string other = otherModelProblem(); !other.empty()) {
     overlay_ = {};
+    planned_path_.clear();
     trace_again_ = false;
     if (!running_) showProblems({{0, other}});
-    session().setProgramOverlay(overlay_);
+    publishOverlay();
     return;
   }
   const xmate::teach::TraceOptions options = traceOptions();
@@ -332,19 +368,32 @@ void ProgramPanel::updateOverlay() {
       overlay_.waypoints.push_back(position(in.via));
       overlay_.labels.push_back(name + tr(" via"));
     }
+    xmate::teach::Target end = in.target;
+    if (in.type == xmate::teach::InstructionType::kPath) {  // a path's marker: where it ends
+      if (in.path.q.empty()) continue;
+      end = xmate::teach::Target{};
+      end.has_q = true;
+      end.q = in.path.q.back();
+    }
     if (int(i) == selected) overlay_.selected = int(overlay_.waypoints.size());
-    overlay_.waypoints.push_back(position(in.target));
+    overlay_.waypoints.push_back(position(end));
     overlay_.labels.push_back(name);
   }
   // The planned path and the pre-flight start where the robot is: only with its state. Until the
   // trace is back the view keeps the previous path.
   if (!haveLiveState()) {
-    overlay_.path.clear();
+    planned_path_.clear();
     trace_again_ = false;  // a trace still running is for a state that is gone
     if (!running_) showProblems({});
   } else {
     startTrace();
   }
+  publishOverlay();
+}
+
+void ProgramPanel::publishOverlay() {
+  overlay_.path = planned_path_;
+  overlay_.path.insert(overlay_.path.end(), recording_trace_.begin(), recording_trace_.end());
   session().setProgramOverlay(overlay_);
 }
 
@@ -390,10 +439,10 @@ void ProgramPanel::traceFinished() {
   }
   if (!haveLiveState() || !otherModelProblem().empty()) return;  // nothing of it applies now
   const xmate::teach::ProgramTrace trace = trace_watcher_->result();
-  overlay_.path.clear();
-  for (const auto& t : trace.instructions) overlay_.path.insert(overlay_.path.end(), t.tcp_path.begin(), t.tcp_path.end());
-  session().setProgramOverlay(overlay_);
-  if (!running_) showProblems(trace.problems);
+  planned_path_.clear();
+  for (const auto& t : trace.instructions) planned_path_.insert(planned_path_.end(), t.tcp_path.begin(), t.tcp_path.end());
+  publishOverlay();
+  if (!running_) showProblems(trace.problems, trace.notices);
 }
 
 }  // namespace rci::ui

@@ -271,6 +271,7 @@ void Krc::Impl::build() {
   dq.setZero();
   ddq.setZero();
   q_set = q;
+  q_set_before = q;
   st.ipoc = config.ipoc_start;
 }
 

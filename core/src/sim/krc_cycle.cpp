@@ -45,6 +45,7 @@ void Krc::Impl::rsiOn() {
   q_start = q;
   q_cartesian = q;
   q_set = q;
+  q_set_before = q;
   start_flange = model::flangePose(arm, q);
   last_pos_corr = {};
   for (Node& n : nodes) {
@@ -71,6 +72,7 @@ void Krc::Impl::rsiStop(KrcStop why, const std::string& message) {
   st.last_stop = why;
   awaiting = false;
   q_set = q;  // the arm holds where it is
+  q_set_before = q;
   dq.setZero();
   ddq.setZero();
   if (why == KrcStop::kSuspended) {
@@ -375,21 +377,27 @@ void Krc::Impl::applyCorrections() {
 
 // ---- The arm ------------------------------------------------------------------------------------------
 
-// Each axis runs to its set-point within its speed (the model's) and acceleration (acceleration_per_speed
-// times it), braking in time: v_wanted = min(v_max, sqrt(2 a |e|), |e| / dt) towards the set-point.
+// Each axis follows its set-point as a servo does: the set-point's own speed (feedforward) plus a
+// correction of the error to the previous set-point, min(sqrt(2 a |e|), |e| / dt) (braking in time), within
+// its speed (the model's) and acceleration (acceleration_per_speed times it). Without the feedforward
+// an axis would trail a moving set-point by v^2 / 2a -- a lag that differs per axis and so leaves the
+// commanded path; with it the arm stays on the path, a cycle behind.
 void Krc::Impl::move() {
   if (st.state != KrcState::kRunning) {
     dq.setZero();
     ddq.setZero();
     q_set = q;
+    q_set_before = q;
     return;
   }
   for (int k = 0; k < 6; ++k) {
     const double v_max = spec->dq_max[size_t(k)];
     const double a_max = config.acceleration_per_speed * v_max;
-    const double e = q_set[k] - q[k];
-    const double speed = std::min({v_max, std::sqrt(2 * a_max * std::abs(e)), std::abs(e) / dt});
-    const double wanted = std::copysign(speed, e);
+    const double feedforward = std::clamp((q_set[k] - q_set_before[k]) / dt, -v_max, v_max);
+    const double e = q_set_before[k] - q[k];  // behind where the set-point was: the feedforward covers its step
+    const double correction = std::copysign(std::min(std::sqrt(2 * a_max * std::abs(e)), std::abs(e) / dt), e);
+    const double wanted = std::clamp(feedforward + correction, -v_max, v_max);
+    q_set_before[k] = q_set[k];
     const double v = dq[k] + std::clamp(wanted - dq[k], -a_max * dt, a_max * dt);
     ddq[k] = (v - dq[k]) / dt;
     dq[k] = v;

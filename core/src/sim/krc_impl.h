@@ -98,6 +98,7 @@ struct Krc::Impl {
   KrcStatus st;
   net::Seqlock<KrcStatus> published;
   model::JointVector q, dq, ddq, q_set, q_start;
+  model::JointVector q_set_before;  // the previous cycle's set-point: its rate is the servo's feedforward
   Eigen::Isometry3d start_flange = Eigen::Isometry3d::Identity();
   std::array<double, 6> last_pos_corr{};  // the Cartesian total the cached IK solved
   model::JointVector q_cartesian;         // start pose moved by last_pos_corr

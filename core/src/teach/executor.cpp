@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // The executor's run loop and controls (executor.h): pre-flight, then one instruction after the
 // other with pauses between them, WAIT / SET_DO / WAIT_DI, failures turned into the report.
-// Motions are in executor_motion.cpp.
+// Motions are in executor_motion.cpp (xMate) and executor_rsi.cpp (KUKA), PATH in executor_path.cpp.
 #include "teach/executor.h"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
+#include <utility>
 #include <thread>
 
 #include <xmate/exception.h>
@@ -146,7 +147,10 @@ RunReport Executor::runProgram(const Program& program, const ExecutorOptions& op
     trace.soft_upper = options.soft_upper;
     trace.has_box = options.has_box;
     trace.box = options.box;
-    report.problems = preflight(program, trace);
+    trace.has_joint_bounds = port_->reachableBounds(trace.joint_lower, trace.joint_upper);
+    ProgramTrace checked = traceProgram(program, trace);
+    report.problems = std::move(checked.problems);
+    report.notices = std::move(checked.notices);
   } catch (const std::exception& e) {
     report.problems.push_back({0, e.what()});
   }
@@ -158,6 +162,7 @@ RunReport Executor::runProgram(const Program& program, const ExecutorOptions& op
     return report;
   }
 
+  if (options.on_notices) options.on_notices(report.notices);
   setState(RunState::kRunning);
   report.outcome = RunState::kFinished;
   for (size_t i = 0; i < program.instructions.size(); ++i) {
@@ -200,8 +205,11 @@ InstructionReport Executor::execute(const Program& program, size_t index) {
       case InstructionType::kMoveJ:
       case InstructionType::kMoveL:
       case InstructionType::kMoveC:
-        if (robot_) runMotion(program, index, r);
-        else runRsiMotion(program, index, r);
+        if (robot_) runMotion(program, in, r);
+        else runRsiMotion(program, in, r);
+        break;
+      case InstructionType::kPath:
+        runPath(program, index, r);
         break;
       case InstructionType::kWait:
         runWait(in, r);

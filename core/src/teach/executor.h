@@ -2,7 +2,8 @@
 // The executor (issue 5): runs a program on the calling thread through the robot's real-time loop
 // with the jerk-limited planners -- MOVEJ in joint position mode (xmate/joint_motion.h), MOVEL and
 // MOVEC in Cartesian position mode (planning/cartesian_trajectory.h, timed within the joint limits
-// by client::planWithinJointLimits) -- after a pre-flight that must find no problem. Another thread
+// by client::planWithinJointLimits), PATH re-timed within the joint limits (path_timing.h) after a
+// joint move to its start -- after a pre-flight that must find no problem. Another thread
 // may pause, resume, stop, single-step and change the speed override at any time, and read the
 // progress without locks. docs/teach.md describes the behaviour.
 #pragma once
@@ -10,6 +11,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -32,6 +34,8 @@ class JointStream;
 namespace xmate::teach {
 
 class RobotPort;
+class PathRecording;
+struct PathTiming;
 
 // progress() reads these without locks from any thread.
 static_assert(std::atomic<double>::is_always_lock_free && std::atomic<long>::is_always_lock_free);
@@ -67,6 +71,15 @@ struct InstructionReport {
   double settle_time = 0;
   bool settled = true;
   double settle_error = 0;
+  // PATH only (docs/teach.md, "Replaying a path"). duration above is the replay of the path alone;
+  // the joint move to its first sample before it took lead_in seconds (0: the arm was there).
+  double lead_in = 0;                 // s, controller cycles
+  double nominal_duration = 0;        // s: the path's duration / speed, as if never slowed
+  double path_joint_deviation = 0;    // rad: the largest joint deviation of the measured joints from the path
+  double path_tcp_deviation = 0;      // m: the largest TCP deviation from the path
+  double slowest_pace = 1;            // the lowest pace relative to the asked one (1: never slowed)
+  double slowed_share = 0;            // share of the path's time replayed slower than asked
+  double slowest_at = 0;              // s of the path where the pace is lowest
 };
 
 struct RunReport {
@@ -74,6 +87,7 @@ struct RunReport {
   std::string message;               // the failure or refusal, naming the instruction
   long failed_instruction = -1;      // 0-based index of the failing instruction, -1 if none
   std::vector<Problem> problems;     // the pre-flight's (outcome kRefused)
+  std::vector<Problem> notices;      // what the pre-flight announces (a PATH's lead-in move)
   std::vector<InstructionReport> instructions;
   double duration = 0;               // s, wall time of the run
 };
@@ -89,6 +103,9 @@ struct ExecutorOptions {
   // once it is set the run stops smoothly as by stop(). E.g. the window's session token, set on
   // Stop, disconnect and quit. Must outlive run(); nullptr for none.
   const std::atomic<bool>* stop_token = nullptr;
+  // Called on the run's thread (never the real-time one) once the pre-flight passed, before
+  // anything moves, with what it announces (RunReport::notices; possibly none).
+  std::function<void(const std::vector<Problem>& notices)> on_notices;
   // Called on the run's thread (never the real-time one) when an instruction starts and ends.
   std::function<void(size_t index)> on_start;
   std::function<void(size_t index, const InstructionReport& report)> on_done;
@@ -177,8 +194,34 @@ class Executor {
   // The model motions plan with: the program's tool (else the robot's), the soft limits.
   model::ArmKinematics motionModel(const Program& program, const model::RobotSpec& spec,
                                    const std::array<double, 16>& robot_tool) const;
-  void runMotion(const Program& program, size_t index, InstructionReport& report);     // xMate (RCI)
-  void runRsiMotion(const Program& program, size_t index, InstructionReport& report);  // KUKA (RSI)
+  // MOVEJ, MOVEL, MOVEC (also a PATH's lead-in, which is a MOVEJ built for it).
+  void runMotion(const Program& program, const Instruction& in, InstructionReport& report);     // xMate (RCI)
+  void runRsiMotion(const Program& program, const Instruction& in, InstructionReport& report);  // KUKA (RSI)
+  // PATH (executor_path.cpp): re-timed, checked, the lead-in joint move to its first sample, then
+  // the timing streamed and the measured joints compared with the path.
+  void runPath(const Program& program, size_t index, InstructionReport& report);
+  // The lead-in; false when it was stopped (the report says so).
+  bool leadIn(const Program& program, const Instruction& in, InstructionReport& report);
+  // A PATH's timing streamed in joint position mode on an xMate (executor_motion.cpp) or as axis
+  // corrections on a KUKA (executor_rsi.cpp), each cycle's measured joints into `recording`; both
+  // fill the report's motion fields as the other motions do.
+  void streamPath(const PathTiming& timing, PathRecording& recording, InstructionReport& report);
+  void streamRsiPath(const Program& program, const PathTiming& timing, PathRecording& recording,
+                     InstructionReport& report);
+  // Throws MotionException naming the path time when the RSI session cannot follow the timing
+  // (rsi::JointStream::checkSample at the RSI cycle). Before anything moves.
+  void checkRsiPath(const PathTiming& timing, double rate_hz);
+  // MOVEJ's and PATH's streaming on an xMate (executor_motion.cpp, the only place that
+  // instantiates it): the plan in joint position mode at the scaled plan time; returns true when
+  // stop() ended it on the way.
+  template <class Plan, class Clock, class OnState>
+  bool streamJointPlan(Plan& plan, Clock& clock, double share, OnState on_state);
+  // Every motion's streaming on a KUKA (executor_rsi.cpp): joints every 1 ms of plan time, one
+  // command per RSI cycle at the scaled plan time, in the RSI session it was planned in; fills the
+  // report's motion fields.
+  void streamRsiGrid(const std::vector<std::array<double, 7>>& grid, double share, bool joint_motion,
+                     const model::ArmKinematics& model, uint32_t session, InstructionReport& report,
+                     PathRecording* recording);
   void runWait(const Instruction& in, InstructionReport& report);
   void runWaitDi(const Program& program, size_t index, InstructionReport& report);
   void recordReached(InstructionReport& report);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The executor's motions (executor.h): MOVEJ streams the joint S-curve in joint position mode,
-// MOVEL/MOVEC stream the timed Cartesian path in Cartesian position mode. Both sample their plan at
-// a plan time that advances by k * dt per cycle (TimeScaling), which is how pause, stop and the
-// speed override act smoothly on the path. After a stall of the client's loop the command continues
+// a PATH its re-timed joints the same way (executor_path.cpp prepares it), MOVEL/MOVEC stream the
+// timed Cartesian path in Cartesian position mode. All sample their plan at a plan time that
+// advances by k * dt per cycle (TimeScaling), which is how pause, stop and the speed override act
+// smoothly on the path. After a stall of the client's loop the command continues
 // what the controller extrapolated and rejoins the plan (client/stall_bridge.h). The callbacks run
 // on the real-time thread: they touch only atomics (relaxed loads/stores) and locals, and allocate
 // nothing.
@@ -21,6 +22,8 @@
 #include "planning/cartesian_pose.h"
 #include "planning/cartesian_trajectory.h"
 #include "teach/executor.h"
+#include "teach/executor_path.h"
+#include "teach/path_timing.h"
 #include "teach/preflight.h"
 #include "teach/targets.h"
 #include "teach/plan_scaling.h"
@@ -127,7 +130,105 @@ void endStartedMotion(Robot& robot) {
   }
 }
 
+// MOVEJ's plan for streamJointPlan: the synchronised S-curve from where the arm is to the goal,
+// planned again from where it really is at the motion's first state.
+struct JointGoalPlan {
+  JointMotionGenerator& generator;
+  std::array<double, 7> q0, goal;
+  int dof;
+
+  double total() const { return generator.GetTime(); }
+  void startFrom(const std::array<double, 7>& q) {
+    q0 = q;
+    generator.calculateSynchronizedValues_joint(q0);
+  }
+  client::StallBridge::Vec at(double time) {
+    std::array<double, 7> delta{}, plan{};
+    const bool finished = generator.calculateDesiredValues_joint(time, delta);
+    for (int i = 0; i < dof; ++i) plan[i] = finished ? goal[i] : q0[i] + delta[i];
+    return plan;
+  }
+  bool finished(double time) const { return time >= generator.GetTime(); }
+};
+
+// A PATH's plan for streamJointPlan: its timing (path_timing.h), which starts at the path's first
+// sample wherever the arm is (the lead-in brought it there; the stall bridge takes out what is left).
+struct TimingPlan {
+  const PathTiming& timing;
+
+  double total() const { return timing.duration; }
+  void startFrom(const std::array<double, 7>&) {}
+  client::StallBridge::Vec at(double time) const { return timingAt(timing, time); }
+  bool finished(double time) const { return time >= timing.duration; }
+};
+
+// The largest joint and TCP tracking errors of a motion, from its states. Real-time safe.
+struct Tracking {
+  int dof;
+  double joint = 0, tcp = 0;
+  void add(const RobotState& s) {
+    joint = std::max(joint, jointError(s, dof));
+    tcp = std::max(tcp, tcpError(s));
+  }
+};
+
+// After a motion streamed for `seconds` of controller time: the report's motion fields, then the
+// wait until the arm is at rest.
+void finishMotion(Robot& robot, int dof, double seconds, const Tracking& tracking, bool stopped,
+                  InstructionReport& report) {
+  report.duration = seconds;
+  report.max_joint_error = tracking.joint;
+  report.max_tcp_error = tracking.tcp;
+  if (stopped) {
+    report.status = InstructionStatus::kStopped;
+    report.message = "stopped by the operator";
+  }
+  settleAtTarget(robot, dof, report);
+}
+
 }  // namespace
+
+template <class Plan, class Clock, class OnState>
+bool Executor::streamJointPlan(Plan& plan, Clock& clock, double share, OnState on_state) {
+  const model::RobotSpec& spec = model::robotSpec(robot_->type());
+  const int dof = spec.dof;
+  const client::StallBridge::Limits limits = client::jointBridgeLimits(spec, share);
+  client::StallBridge bridge(dof, limits);
+  client::StallBridge::Vec last = plan.at(0);
+  bool stopped = false;
+  auto planAt = [&](double time) { return plan.at(time); };
+  startMoveWhenReady(*robot_, CM::kJointPosition, MM::kJointPosition);
+  robot_->Control(JointControl([&](RobotState s) -> JointPositions {
+    const bool starting = clock.calls == 0;
+    limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, dof, 1.0);
+    const double t = clock.advance(s, scalingTarget(clock.scaling));
+    if (starting && clock.calls == 1) {
+      plan.startFrom(s.q);  // where the motion really starts
+      last = s.q;
+      bridge.startAt(s.message_id, s.q_c);  // the "hold still" command the controller has now
+    }
+    on_state(s, t);
+    fraction_.store(std::min(1.0, t / plan.total()), std::memory_order_relaxed);
+    JointPositions out;
+    if (stoppedHere(clock.scaling) && !bridge.bridging()) {
+      stopped = true;
+      out.q = last;
+      out.motion_finished = true;
+      return out;
+    }
+    bool plan_finished = false;
+    const client::StallBridge::Vec q = bridge.command(s.message_id, [&](int k) {
+      const double time = clock.planTimeBefore(k);
+      if (k == 0) plan_finished = plan.finished(time);
+      return plan.at(time);
+    });
+    out.q = q;
+    last = out.q;
+    out.motion_finished = plan_finished && !bridge.bridging();
+    return out;
+  }));
+  return stopped;
+}
 
 model::ArmKinematics Executor::motionModel(const Program& program, const model::RobotSpec& spec,
                                            const std::array<double, 16>& robot_tool) const {
@@ -145,8 +246,7 @@ model::ArmKinematics Executor::motionModel(const Program& program, const model::
   return model;
 }
 
-void Executor::runMotion(const Program& program, size_t index, InstructionReport& report) {
-  const Instruction& in = program.instructions[index];
+void Executor::runMotion(const Program& program, const Instruction& in, InstructionReport& report) {
   const model::RobotSpec& spec = model::robotSpec(robot_->type());
   const int dof = spec.dof;
   const model::ArmKinematics model = motionModel(program, spec, robot_->toolFrame());
@@ -160,12 +260,8 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
   const double share = in.speed * kSpeedShare;
   ScaledClock clock(override_.load(), safeScalingRate(share, accelOverVelocity(in.type == InstructionType::kMoveJ, spec)));
   bool stopped = false;
-  double max_joint_error = 0, max_tcp_error = 0;
-  auto track = [&](const RobotState& s) {
-    max_joint_error = std::max(max_joint_error, jointError(s, dof));
-    max_tcp_error = std::max(max_tcp_error, tcpError(s));
-  };
-  // Stop requested and the ramp has reached zero: end the motion where it stands.
+  Tracking tracking{dof};
+  auto track = [&](const RobotState& s) { tracking.add(s); };
 
   if (in.type == InstructionType::kMoveJ) {
     std::array<double, 7> goal{};
@@ -173,52 +269,11 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
     if (rc != XmateModel::kIkOk)
       throw MotionException(std::string("the target pose cannot be reached: ") + client::ikFailureText(rc) +
                             " (IK code " + std::to_string(rc) + ")");
-    std::array<double, 7> q0 = state.q;
     JointMotionGenerator generator(share, goal, robot_->type());
-    generator.calculateSynchronizedValues_joint(q0);
-    const double total = generator.GetTime();
-    if (total > 0) {
-      std::array<double, 7> last = q0;
-      const client::StallBridge::Limits limits = client::jointBridgeLimits(spec, share);
-      client::StallBridge bridge(dof, limits);
-      auto planAt = [&](double time) {
-        std::array<double, 7> delta{}, plan{};
-        const bool finished = generator.calculateDesiredValues_joint(time, delta);
-        for (int i = 0; i < dof; ++i) plan[i] = finished ? goal[i] : q0[i] + delta[i];
-        return plan;
-      };
-      startMoveWhenReady(*robot_, CM::kJointPosition, MM::kJointPosition);
-      robot_->Control(JointControl([&](RobotState s) -> JointPositions {
-        const bool starting = clock.calls == 0;
-        track(s);
-        limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, dof, 1.0);
-        const double t = clock.advance(s, scalingTarget(clock.scaling));
-        if (starting && clock.calls == 1) {
-          q0 = s.q;  // where the motion really starts
-          last = q0;
-          generator.calculateSynchronizedValues_joint(q0);
-          bridge.startAt(s.message_id, s.q_c);  // the "hold still" command the controller has now
-        }
-        fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
-        JointPositions out;
-        if (stoppedHere(clock.scaling) && !bridge.bridging()) {
-          stopped = true;
-          out.q = last;
-          out.motion_finished = true;
-          return out;
-        }
-        bool plan_finished = false;
-        const client::StallBridge::Vec q = bridge.command(s.message_id, [&](int k) {
-          const double time = clock.planTimeBefore(k);
-          if (k == 0) plan_finished = time >= generator.GetTime();
-          return planAt(time);
-        });
-        out.q = q;
-        last = out.q;
-        out.motion_finished = plan_finished && !bridge.bridging();
-        return out;
-      }));
-    }
+    JointGoalPlan plan{generator, state.q, goal, dof};
+    plan.startFrom(state.q);
+    if (plan.total() > 0)
+      stopped = streamJointPlan(plan, clock, share, [&](const RobotState& s, double) { track(s); });
   } else {
     // Planned once the controller accepted the motion, from where the arm is then: the previous
     // motion's stop may have taken it a little further while startMove was retried. Until Control()
@@ -274,14 +329,19 @@ void Executor::runMotion(const Program& program, size_t index, InstructionReport
       }));
     }
   }
-  report.duration = clock.elapsed();
-  report.max_joint_error = max_joint_error;
-  report.max_tcp_error = max_tcp_error;
-  if (stopped) {
-    report.status = InstructionStatus::kStopped;
-    report.message = "stopped by the operator";
-  }
-  settleAtTarget(*robot_, dof, report);
+  finishMotion(*robot_, dof, clock.elapsed(), tracking, stopped, report);
+}
+
+void Executor::streamPath(const PathTiming& timing, PathRecording& recording, InstructionReport& report) {
+  const model::RobotSpec& spec = model::robotSpec(robot_->type());
+  ScaledClock clock(override_.load(), safeScalingRate(kPathLimitShare, accelOverVelocity(true, spec)));
+  Tracking tracking{spec.dof};
+  TimingPlan plan{timing};
+  const bool stopped = streamJointPlan(plan, clock, kPathLimitShare, [&](const RobotState& s, double plan_time) {
+    tracking.add(s);
+    recording.add(plan_time, s.q);
+  });
+  finishMotion(*robot_, spec.dof, clock.elapsed(), tracking, stopped, report);
 }
 
 }  // namespace xmate::teach

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // The executor on a KUKA over RSI (executor.h): every motion becomes joints every 1 ms of plan time
-// -- MOVEJ from planning::JointLine, MOVEL/MOVEC through IK of the timed Cartesian path -- checked
-// at the RSI cycle against the axis ranges, speeds and the context's AXISCORR limits before it
-// starts, then streamed one command per RSI cycle by rsi::JointStream. The plan time advances by
-// k * cycle as on the xMate, so pause, stop and the override act the same way. The per-cycle code
-// runs on the link's real-time thread: atomics, locals and the precomputed joints only.
+// -- MOVEJ from planning::JointLine, MOVEL/MOVEC through IK of the timed Cartesian path, a PATH
+// from its re-timing (executor_path.cpp) -- checked at the RSI cycle against the axis ranges,
+// speeds and the context's AXISCORR limits before it starts, then streamed one command per RSI
+// cycle by rsi::JointStream. The plan time advances by k * cycle as on the xMate, so pause, stop and
+// the override act the same way. The per-cycle code runs on the link's real-time thread: atomics,
+// locals and the precomputed joints only.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,6 +21,8 @@
 #include "rsi/digital_io.h"
 #include "rsi/joint_stream.h"
 #include "teach/executor.h"
+#include "teach/executor_path.h"
+#include "teach/path_timing.h"
 #include "teach/plan_scaling.h"
 #include "teach/settle.h"
 #include "teach/robot_port.h"
@@ -54,6 +57,9 @@ class RsiPort : public RobotPort {
   std::array<double, 16> toolFrame() override { return tool_; }
   void setDO(int signal, bool value) override { io().setOutput(signal, value); }
   bool getDI(int signal) override { return io().input(signal); }
+  bool reachableBounds(std::array<double, 7>& lower, std::array<double, 7>& upper) override {
+    return stream_.reachableBounds(lower, upper);
+  }
 
  private:
   rsi::DigitalIo& io() {
@@ -106,6 +112,34 @@ double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6
   return std::hypot(pa[3] - pb[3], pa[7] - pb[7], pa[11] - pb[11]);
 }
 
+// Six axes as seven joints (the seventh 0). Real-time safe.
+JointPoint widen(const std::array<double, 6>& q) {
+  JointPoint out{};
+  std::copy(q.begin(), q.end(), out.begin());
+  return out;
+}
+
+// The first sample of `grid` (joints every kGridDt of plan time) the RSI session cannot follow,
+// checked at the RSI cycle (rsi::JointStream::checkSample): its index and what is wrong there
+// (problem empty when none is).
+struct GridProblem {
+  size_t sample = 0;
+  std::string problem;
+};
+GridProblem checkGrid(const rsi::JointStream& stream, const client::JointSamples& grid,
+                      const std::array<double, 6>& q_on) {
+  const double dt = stream.cycleSeconds();
+  const size_t stride = std::max<size_t>(1, size_t(std::lround(dt / kGridDt)));
+  const std::array<double, 7>* previous = nullptr;
+  for (size_t k = 0;; k = std::min(k + stride, grid.size() - 1)) {
+    std::string problem =
+        stream.checkSample(grid[k].data(), previous ? previous->data() : nullptr, previous ? dt : 1.0, q_on);
+    if (!problem.empty()) return {k, std::move(problem)};
+    previous = &grid[k];
+    if (k == grid.size() - 1) return {};
+  }
+}
+
 }  // namespace
 
 RunReport Executor::run(arm::RsiArm& arm, const Program& program, const ExecutorOptions& options) {
@@ -119,8 +153,7 @@ RunReport Executor::run(arm::Arm& arm, const Program& program, const ExecutorOpt
   throw std::invalid_argument("teach::Executor::run: an arm of neither family the executor drives (RciArm, RsiArm)");
 }
 
-void Executor::runRsiMotion(const Program& program, size_t index, InstructionReport& report) {
-  const Instruction& in = program.instructions[index];
+void Executor::runRsiMotion(const Program& program, const Instruction& in, InstructionReport& report) {
   rsi::JointStream& stream = *stream_;
   const model::RobotSpec& spec = stream.spec();
   const model::ArmKinematics model = motionModel(program, spec, port_->toolFrame());
@@ -149,25 +182,43 @@ void Executor::runRsiMotion(const Program& program, size_t index, InstructionRep
   if (grid.empty()) grid.push_back(q_now);
 
   // Checked at the RSI cycle before anything moves.
-  const double dt = stream.cycleSeconds();
-  const size_t stride = std::max<size_t>(1, size_t(std::lround(dt / kGridDt)));
-  const std::array<double, 7>* previous = nullptr;
-  for (size_t k = 0;; k = std::min(k + stride, grid.size() - 1)) {
-    const std::string problem = stream.checkSample(grid[k].data(), previous ? previous->data() : nullptr,
-                                                   previous ? dt : 1.0, state.q_on);
-    if (!problem.empty()) {
-      char at[64];
-      std::snprintf(at, sizeof at, " (at t = %.3f s of the motion)", double(k) * kGridDt);
-      throw MotionException(problem + at);
-    }
-    previous = &grid[k];
-    if (k == grid.size() - 1) break;
+  const GridProblem check = checkGrid(stream, grid, state.q_on);
+  if (!check.problem.empty()) {
+    char at[64];
+    std::snprintf(at, sizeof at, " (at t = %.3f s of the motion)", double(check.sample) * kGridDt);
+    throw MotionException(check.problem + at);
   }
+  streamRsiGrid(grid, share, in.type == InstructionType::kMoveJ, model, state.session, report, nullptr);
+}
 
+void Executor::checkRsiPath(const PathTiming& timing, double rate_hz) {
+  rsi::StreamState state;
+  if (!stream_->state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
+  const GridProblem check = checkGrid(*stream_, timing.q, state.q_on);
+  if (check.problem.empty()) return;
+  const double t = timing.path_time[check.sample];
+  char at[96];
+  std::snprintf(at, sizeof at, "at t = %.2f s of the path (near sample %ld): ", t, std::lround(t * rate_hz));
+  throw MotionException(at + check.problem);
+}
+
+void Executor::streamRsiPath(const Program& program, const PathTiming& timing, PathRecording& recording,
+                             InstructionReport& report) {
+  const model::ArmKinematics model = motionModel(program, stream_->spec(), port_->toolFrame());
+  rsi::StreamState state;
+  if (!stream_->state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
+  streamRsiGrid(timing.q, kPathLimitShare, true, model, state.session, report, &recording);
+}
+
+void Executor::streamRsiGrid(const client::JointSamples& grid, double share, bool joint_motion,
+                             const model::ArmKinematics& model, uint32_t session, InstructionReport& report,
+                             PathRecording* recording) {
+  rsi::JointStream& stream = *stream_;
+  const double dt = stream.cycleSeconds();
   const double total = double(grid.size() - 1) * kGridDt;
-  TimeScaling scaling(override_.load(), safeScalingRate(share, accelOverVelocity(in.type == InstructionType::kMoveJ, spec)));
-  const client::StallBridge::Limits limits = client::jointBridgeLimits(spec, share);
-  const double braking = in.type == InstructionType::kMoveJ ? 1.0 : kCartesianBrakingShare;
+  TimeScaling scaling(override_.load(), safeScalingRate(share, accelOverVelocity(joint_motion, stream.spec())));
+  const client::StallBridge::Limits limits = client::jointBridgeLimits(stream.spec(), share);
+  const double braking = joint_motion ? 1.0 : kCartesianBrakingShare;
   auto planAt = [&](double t) { return gridAt(grid, t); };
   double plan_time = 0, max_joint_error = 0, max_tcp_error = 0;
   uint64_t cycles = 0;
@@ -178,6 +229,7 @@ void Executor::runRsiMotion(const Program& program, size_t index, InstructionRep
     ++cycles;
     max_joint_error = std::max(max_joint_error, maxDifference(s.q_command, s.q));
     max_tcp_error = std::max(max_tcp_error, tcpDistance(model, s.q_command, s.q));
+    if (recording) recording->add(plan_time, widen(s.q));
     limitScalingAtPlan(scaling, plan_time, planAt, limits, 6, braking);
     scaling.setTarget(scalingTarget(scaling));
     scaling.step(dt);
@@ -193,7 +245,7 @@ void Executor::runRsiMotion(const Program& program, size_t index, InstructionRep
     return plan_time >= total;
   };
   LambdaMotion<decltype(cycle)> motion(cycle);
-  if (total > 0) stream.run(motion, std::chrono::seconds(5), state.session);
+  if (total > 0) stream.run(motion, std::chrono::seconds(5), session);
 
   report.duration = double(cycles) * dt;
   report.max_joint_error = max_joint_error;
@@ -203,6 +255,7 @@ void Executor::runRsiMotion(const Program& program, size_t index, InstructionRep
     report.message = "stopped by the operator";
   }
   // Settled: the actual axes have caught up with the last command.
+  rsi::StreamState state;
   settle(
       [&] {
         stream.state(state);

@@ -79,7 +79,7 @@ std::vector<double> boxAverage(const std::vector<double>& x, size_t w) {
 
 std::string describeCeiling(const Ceiling& c, double t) {
   char buf[200];
-  std::snprintf(buf, sizeof buf, "at t = %.2f s of the path joint %d's demonstrated %s of %.3g %s", t, c.joint + 1,
+  std::snprintf(buf, sizeof buf, "at t = %.2f s of the path, joint %d's demonstrated %s of %.3g %s", t, c.joint + 1,
                 kQuantity[c.quantity], c.value, kUnit[c.quantity]);
   return buf;
 }
@@ -101,7 +101,7 @@ class PathTimer {
       if (verify(timing)) return timing;
     }
     char buf[120];
-    std::snprintf(buf, sizeof buf, "at t = %.2f s of the path", worst_time_);
+    std::snprintf(buf, sizeof buf, "at t = %.2f s of the path,", worst_time_);
     throw std::runtime_error(std::string("the demonstrated path cannot be timed within the joint limits: ") + buf +
                              " joint " + std::to_string(worst_joint_ + 1) + "'s " + kQuantity[worst_quantity_] +
                              " stays too high however it is slowed; record that part again more smoothly");
@@ -155,7 +155,7 @@ class PathTimer {
       char buf[120];
       std::snprintf(buf, sizeof buf, " (the joint allows %.3g %s): it would have to be replayed more than %.0f times ",
                     limitOf(spec_, lowest.quantity, lowest.joint), kUnit[lowest.quantity], kMaxPathSlowdown);
-      throw std::runtime_error("the demonstrated path is too fast for the robot " + describeCeiling(lowest, lowest_time) +
+      throw std::runtime_error("the demonstrated path is too fast for the robot: " + describeCeiling(lowest, lowest_time) +
                                buf + "slower than demonstrated there; record it again more slowly");
     }
   }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pre-flight trace (preflight.h): follows the program with an offline model of the robot,
-// sampling every motion in joint space (MOVEJ) or along its Cartesian path with chained IK
-// (MOVEL/MOVEC), and collects every problem by instruction.
+// sampling every motion in joint space (MOVEJ, a PATH's samples) or along its Cartesian path with
+// chained IK (MOVEL/MOVEC), and collects every problem by instruction and what to announce.
 #include "teach/preflight.h"
 
 #include <algorithm>
@@ -16,6 +16,8 @@
 #include "model/arm_kinematics.h"
 #include "model/robot_spec.h"
 #include "planning/cartesian_pose.h"
+#include "teach/path.h"
+#include "teach/path_timing.h"
 #include "teach/program_io.h"
 #include "teach/targets.h"
 
@@ -45,8 +47,12 @@ bool insideBox(const SafetyBox& box, const std::array<double, 3>& p) {
 class Tracer {
  public:
   Tracer(const Program& program, const TraceOptions& options)
-      : program_(program), options_(options), spec_(*program.robot), model_(*program.robot) {
-    model_.SetCoor(program.has_tool ? program.tool : options.tool);  // the TCP its poses are poses of
+      : program_(program),
+        options_(options),
+        spec_(*program.robot),
+        model_(*program.robot),
+        tool_(program.has_tool ? program.tool : options.tool) {
+    model_.SetCoor(tool_);  // the TCP its poses are poses of
     model_.SetSpeedCheckInterval(0);
     if (options.has_soft_limits) {
       std::array<double, 7> up{}, low{};
@@ -83,12 +89,14 @@ class Tracer {
   const TraceOptions& options_;
   const model::RobotSpec& spec_;
   model::ArmKinematics model_;
+  std::array<double, 16> tool_;
   std::array<double, 7> q_{};
   size_t index_ = 0;
   InstructionTrace current_;
   ProgramTrace result_;
 
   void problem(const std::string& what) { result_.problems.push_back({index_, describe(program_, index_) + ": " + what}); }
+  void notice(const std::string& what) { result_.notices.push_back({index_, describe(program_, index_) + ": " + what}); }
 
   void traceOne(const Instruction& in) {
     try {
@@ -98,6 +106,7 @@ class Tracer {
       return;
     }
     if (in.type == InstructionType::kMoveJ) traceJoint(in);
+    else if (in.type == InstructionType::kPath) tracePath(in);
     else if (isMotion(in.type)) traceCartesian(in);
   }
 
@@ -146,18 +155,107 @@ class Tracer {
       return;
     }
     if (!withinLimits(goal, "the target")) return;
-    double largest = 0;
-    for (int j = 0; j < spec_.dof; ++j) largest = std::max(largest, std::abs(goal[j] - q_[j]));
-    const int samples = std::clamp(int(std::ceil(largest / 0.01)), 2, 1000);
-    for (int k = 0; k <= samples; ++k) {
-      const double s = double(k) / samples;
-      std::array<double, 7> q{};
-      for (int j = 0; j < 7; ++j) q[j] = q_[j] + s * (goal[j] - q_[j]);
-      current_.tcp_path.push_back(translation(model_.GetCartPose(q)));
-    }
+    current_.tcp_path = jointMoveTcp(q_, goal);
     checkBox(current_.tcp_path);
     current_.traced = true;
     q_ = goal;
+  }
+
+  // The TCP along a joint move (straight in joint space), every 0.01 rad of the largest joint's
+  // change.
+  std::vector<std::array<double, 3>> jointMoveTcp(const std::array<double, 7>& from, const std::array<double, 7>& to) {
+    const int samples = std::clamp(int(std::ceil(largestChange(from, to) / 0.01)), 2, 1000);
+    std::vector<std::array<double, 3>> tcp;
+    for (int k = 0; k <= samples; ++k) {
+      const double s = double(k) / samples;
+      std::array<double, 7> q{};
+      for (int j = 0; j < 7; ++j) q[j] = from[j] + s * (to[j] - from[j]);
+      tcp.push_back(translation(model_.GetCartPose(q)));
+    }
+    return tcp;
+  }
+
+  double largestChange(const std::array<double, 7>& a, const std::array<double, 7>& b) const {
+    double largest = 0;
+    for (int j = 0; j < spec_.dof; ++j) largest = std::max(largest, std::abs(b[j] - a[j]));
+    return largest;
+  }
+
+  // "joint 2" on an xMate, "A2" on a KUKA.
+  std::string jointName(int j) const {
+    return (spec_.family == model::RobotFamily::kKuka ? "A" : "joint ") + std::to_string(j + 1);
+  }
+
+  // PATH: the lead-in joint move (announced), every sample against the limits and the box, and
+  // its re-timing.
+  void tracePath(const Instruction& in) {
+    const JointPath& path = in.path;
+    const double change = largestChange(q_, path.q.front());
+    if (change > kPathLeadIn) {
+      notice(fmt("first moves to the start of the path with a joint move (largest joint change %.1f deg)",
+                 change * kDeg));
+      checkLeadInBox(jointMoveTcp(q_, path.q.front()));
+    }
+    checkPathSamples(path);
+    try {
+      timePath(PathSpline(path, spec_.dof), spec_, in.speed);
+    } catch (const std::exception& e) {
+      problem(e.what());
+    }
+    current_.tcp_path = tcpTrace(path, spec_, tool_);
+    current_.traced = true;
+    q_ = path.q.back();
+  }
+
+  void checkLeadInBox(const std::vector<std::array<double, 3>>& tcp) {
+    if (!options_.has_box) return;
+    for (size_t k = 0; k < tcp.size(); ++k)
+      if (!insideBox(options_.box, tcp[k])) {
+        problem("the joint move to the start of the path leaves the Cartesian safety box at " + position(tcp[k]) +
+                fmt(" (%.0f %% of the way); add a MOVEJ inside the box before the path", 100.0 * double(k) / double(tcp.size() - 1)));
+        return;
+      }
+  }
+
+  // Each check names the first sample that fails it, by its time in the path.
+  void checkPathSamples(const JointPath& path) {
+    bool range_reported = false, soft_reported = false, bounds_reported = false, box_reported = false;
+    for (size_t k = 0; k < path.q.size(); ++k) {
+      const JointPoint& q = path.q[k];
+      const std::string at = fmt("at t = %.3f s of the path", double(k) / path.rate_hz) + " (sample " +
+                             std::to_string(k) + "): ";
+      for (int j = 0; j < spec_.dof; ++j) {
+        if (!range_reported && (q[j] < spec_.q_min[j] || q[j] > spec_.q_max[j])) {
+          problem(at + jointName(j) + fmt(" at %.2f deg is outside its range [%.2f, %.2f] deg", q[j] * kDeg,
+                                          spec_.q_min[j] * kDeg, spec_.q_max[j] * kDeg) +
+                  "; record the path again within the joint range");
+          range_reported = true;
+        }
+        if (!soft_reported && options_.has_soft_limits && (q[j] < options_.soft_lower[j] || q[j] > options_.soft_upper[j])) {
+          problem(at + jointName(j) + fmt(" at %.2f deg is outside its soft limits [%.2f, %.2f] deg", q[j] * kDeg,
+                                          options_.soft_lower[j] * kDeg, options_.soft_upper[j] * kDeg) +
+                  "; record the path again within them or widen the soft limits");
+          soft_reported = true;
+        }
+        if (!bounds_reported && options_.has_joint_bounds &&
+            (q[j] < options_.joint_lower[j] - 1e-9 || q[j] > options_.joint_upper[j] + 1e-9)) {
+          problem(at + jointName(j) + fmt(" at %.2f deg is outside what this session can reach, [%.2f, %.2f] deg",
+                                          q[j] * kDeg, options_.joint_lower[j] * kDeg, options_.joint_upper[j] * kDeg) +
+                  " (where RSI was switched on plus the correction limits of its context); switch RSI on nearer to "
+                  "the path, raise the correction limits in the RSI context, or record the path again closer to the "
+                  "RSI start pose");
+          bounds_reported = true;
+        }
+      }
+      if (!box_reported && options_.has_box) {
+        const std::array<double, 3> tcp = translation(model_.GetCartPose(q));
+        if (!insideBox(options_.box, tcp)) {
+          problem(at + "the TCP at " + position(tcp) +
+                  " is outside the Cartesian safety box; record the path again inside the box or enlarge the box");
+          box_reported = true;
+        }
+      }
+    }
   }
 
   void traceCartesian(const Instruction& in) {

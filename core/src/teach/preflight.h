@@ -34,6 +34,11 @@ struct TraceOptions {
   // program that records its tool.
   bool has_tcp = false;
   std::array<double, 16> tcp = kIdentityPose;
+  // The joints the session can reach (on a KUKA over RSI: the start pose plus the context's
+  // correction limits, rsi::JointStream::reachableBounds), rad. PATH samples are checked against
+  // them.
+  bool has_joint_bounds = false;
+  std::array<double, 7> joint_lower{}, joint_upper{};
 };
 
 struct Problem {
@@ -50,7 +55,14 @@ struct InstructionTrace {
 struct ProgramTrace {
   std::vector<InstructionTrace> instructions;  // one per instruction (non-motions: traced = false)
   std::vector<Problem> problems;               // in instruction order
+  // Not problems, but what the operator should know before the run: a PATH that starts away from
+  // where the arm will be first moves to its first sample with a joint move.
+  std::vector<Problem> notices;
 };
+
+// A PATH starting farther than this (any joint, rad) from where the arm is gets a lead-in: a joint
+// move (as MOVEJ, at the PATH's speed) to its first sample.
+inline constexpr double kPathLeadIn = 1e-4;
 
 // Never throws for a bad program: every problem becomes a Problem. After a motion that cannot be
 // resolved the trace goes on from the last good configuration, so later problems still show.

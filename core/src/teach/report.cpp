@@ -30,7 +30,28 @@ Json instructionJson(const Program& program, size_t i, const InstructionReport& 
     v["settled"] = r.settled;
     if (!r.settled) v["settle_error_rad"] = r.settle_error;
   }
+  if (in.type == InstructionType::kPath && r.status != InstructionStatus::kNotRun) {
+    v["lead_in_s"] = r.lead_in;
+    v["nominal_duration_s"] = r.nominal_duration;
+    v["path_joint_deviation_rad"] = r.path_joint_deviation;
+    v["path_tcp_deviation_m"] = r.path_tcp_deviation;
+    v["slowest_pace"] = r.slowest_pace;
+    v["slowed_share"] = r.slowed_share;
+    v["slowest_at_s"] = r.slowest_at;
+  }
   return v;
+}
+
+// Pre-flight problems and notices alike: the instruction (1-based) and the message.
+Json problemsJson(const std::vector<Problem>& problems) {
+  Json list = Json::array();
+  for (const Problem& p : problems) {
+    Json v = Json::object();
+    v["instruction"] = p.instruction + 1;
+    v["message"] = p.message;
+    list.push_back(std::move(v));
+  }
+  return list;
 }
 
 }  // namespace
@@ -44,14 +65,8 @@ Json reportToJson(const Program& program, const RunReport& report) {
   if (!report.message.empty()) doc["message"] = report.message;
   doc["failed_instruction"] = report.failed_instruction >= 0 ? Json(report.failed_instruction + 1) : Json();
   doc["duration_s"] = report.duration;
-  Json problems = Json::array();
-  for (const Problem& p : report.problems) {
-    Json v = Json::object();
-    v["instruction"] = p.instruction + 1;
-    v["message"] = p.message;
-    problems.push_back(std::move(v));
-  }
-  doc["problems"] = std::move(problems);
+  doc["problems"] = problemsJson(report.problems);
+  doc["notices"] = problemsJson(report.notices);
   Json list = Json::array();
   for (size_t i = 0; i < report.instructions.size() && i < program.instructions.size(); ++i)
     list.push_back(instructionJson(program, i, report.instructions[i]));

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The run report as JSON (docs/teach.md, "Report"): the outcome, the failing instruction, the
-// pre-flight problems, and per instruction its status, reached q and pose, duration and maximum
-// tracking error. rci-cli run --report writes it; the GUI can save it the same way.
+// pre-flight problems and notices, and per instruction its status, reached q and pose, duration and
+// maximum tracking error (a PATH also its lead-in, deviation from the path and how much it was
+// slowed). rci-cli run --report writes it; the GUI can save it the same way.
 #pragma once
 
 #include <string>

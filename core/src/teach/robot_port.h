@@ -23,6 +23,14 @@ class RobotPort {
   // Throw std::exception (its message says what to do) where the robot cannot.
   virtual void setDO(int signal, bool value) = 0;
   virtual bool getDI(int signal) = 0;
+  // The joints (rad) this session can reach at all, when the robot limits them beyond its axis
+  // ranges (a KUKA over RSI: the pose at RSI_ON plus the context's correction limits); false when it
+  // does not (an xMate) or does not know yet.
+  virtual bool reachableBounds(std::array<double, 7>& lower, std::array<double, 7>& upper) {
+    (void)lower;
+    (void)upper;
+    return false;
+  }
 };
 
 }  // namespace xmate::teach

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: Apache-2.0
+// The executor's PATH (executor.h, docs/teach.md "Replaying a path"), on either robot family: the
+// path re-timed within the limits (timePath), on a KUKA checked against what the RSI session can
+// reach, then a lead-in joint move to its first sample, then the timing streamed with the same
+// plan-time machinery as every motion (pause, stop, override, single step), and afterwards the
+// measured joints compared with the path (pathDeviation).
+#include <algorithm>
+#include <cmath>
+
+#include "teach/executor.h"
+#include "teach/executor_path.h"
+#include "teach/path.h"
+#include "teach/path_timing.h"
+#include "teach/robot_port.h"
+
+namespace xmate::teach {
+
+PathRecording::PathRecording(const PathTiming& timing) : timing_(timing) {
+  measured_.reserve(timing.q.size() + 1);
+  hints_.reserve(timing.q.size() + 1);
+}
+
+void PathRecording::add(double plan_time, const JointPoint& measured) {
+  if (plan_time < next_plan_time_ || measured_.size() == measured_.capacity()) return;
+  next_plan_time_ = plan_time + timing_.step;
+  // The path time the plan commanded: path_time between the two samples around plan_time.
+  const size_t last = timing_.path_time.size() - 1;
+  const double x = std::clamp(plan_time / timing_.step, 0.0, double(last));
+  const size_t i = std::min(size_t(x), last);
+  const size_t j = std::min(i + 1, last);
+  const double f = x - double(i);
+  measured_.push_back(measured);
+  hints_.push_back(timing_.path_time[i] + f * (timing_.path_time[j] - timing_.path_time[i]));
+}
+
+namespace {
+
+double largestJointChange(const JointPoint& a, const JointPoint& b, int dof) {
+  double m = 0;
+  for (int j = 0; j < dof; ++j) m = std::max(m, std::abs(a[size_t(j)] - b[size_t(j)]));
+  return m;
+}
+
+}  // namespace
+
+void Executor::runPath(const Program& program, size_t index, InstructionReport& report) {
+  const Instruction& in = program.instructions[index];
+  const model::RobotSpec& spec = port_->spec();
+  const PathSpline spline(in.path, spec.dof);
+  const PathTiming timing = timePath(spline, spec, in.speed);  // throws, in operator words, when impossible
+  report.nominal_duration = timing.nominal_duration;
+  report.slowest_pace = timing.slowest;
+  report.slowed_share = timing.slowed_share;
+  report.slowest_at = timing.slowest_at;
+  if (stream_) checkRsiPath(timing, in.path.rate_hz);  // before anything moves
+  if (!leadIn(program, in, report)) return;
+
+  PathRecording recording(timing);
+  if (robot_) streamPath(timing, recording, report);
+  else streamRsiPath(program, timing, recording, report);
+  if (recording.measured().empty()) return;
+  const model::ArmKinematics model = motionModel(program, spec, port_->toolFrame());
+  const PathDeviation deviation = pathDeviation(spline, model, recording.measured(), recording.hints());
+  report.path_joint_deviation = deviation.joint;
+  report.path_tcp_deviation = deviation.tcp;
+}
+
+bool Executor::leadIn(const Program& program, const Instruction& in, InstructionReport& report) {
+  const JointPoint& start = in.path.q.front();
+  if (largestJointChange(port_->read().q, start, port_->spec().dof) <= kPathLeadIn) return true;
+  Instruction move;  // a MOVEJ to the first sample, at the PATH's speed
+  move.type = InstructionType::kMoveJ;
+  move.name = in.name;
+  move.target.has_q = true;
+  move.target.q = start;
+  move.speed = in.speed;
+  InstructionReport lead;
+  lead.status = InstructionStatus::kRunning;
+  if (robot_) runMotion(program, move, lead);
+  else runRsiMotion(program, move, lead);
+  report.lead_in = lead.duration;
+  if (lead.status != InstructionStatus::kStopped) return true;
+  report.status = InstructionStatus::kStopped;
+  report.message = "stopped by the operator on the way to the start of the path";
+  report.max_joint_error = lead.max_joint_error;
+  report.max_tcp_error = lead.max_tcp_error;
+  report.settle_time = lead.settle_time;
+  report.settled = lead.settled;
+  report.settle_error = lead.settle_error;
+  return false;
+}
+
+}  // namespace xmate::teach
