@@ -131,6 +131,32 @@ class WhenProgress {
   std::thread thread_;
 };
 
+
+// What pauseHoldAndResume saw: the progress when the pause took hold and 150 ms later, and the
+// joints once the arm had come to rest and 150 ms later.
+struct PauseProbe {
+  double paused_at = -1, fraction_later = -1;
+  std::array<double, 7> q_paused{}, q_later{};
+};
+
+// Pauses the run, waits until the arm rests, watches it hold for 150 ms, resumes (a WhenProgress action).
+void pauseHoldAndResume(Executor& executor, Robot& robot, PauseProbe& probe) {
+  executor.pause();
+  if (!eventually([&] { return executor.progress().state == RunState::kPaused; })) return;
+  probe.paused_at = executor.progress().fraction;
+  // The command stands still; the arm catches up with it, then stays.
+  eventually([&] {
+    double speed = 0;
+    for (double v : robot.receiveRobotState().dq_m) speed = std::max(speed, std::abs(v));
+    return speed < 1e-4;
+  });
+  probe.q_paused = robot.receiveRobotState().q;
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));
+  probe.q_later = robot.receiveRobotState().q;
+  probe.fraction_later = executor.progress().fraction;
+  executor.resume();
+}
+
 }  // namespace
 
 class TestExecutor : public QObject {
@@ -241,38 +267,22 @@ void TestExecutor::pauseAndResumeMidMove() {
   goal[1] = -1.9;
   program.instructions.push_back(moveJ(jointTarget(goal), 1.0, "across"));
   Executor executor;
-  double paused_at = -1, fraction_later = -1;
-  std::array<double, 7> q_paused{}, q_later{};
+  PauseProbe probe;
   {
     WhenProgress pauser(executor,
                         [](const Progress& p) {
                           return p.instruction == 1 && p.state == RunState::kRunning && p.fraction > 0.15;
                         },
-                        [&] {
-                          executor.pause();
-                          if (!eventually([&] { return executor.progress().state == RunState::kPaused; })) return;
-                          paused_at = executor.progress().fraction;
-                          // The command stands still; the arm catches up with it, then stays.
-                          eventually([&] {
-                            double speed = 0;
-                            for (double v : robot->receiveRobotState().dq_m) speed = std::max(speed, std::abs(v));
-                            return speed < 1e-4;
-                          });
-                          q_paused = robot->receiveRobotState().q;
-                          std::this_thread::sleep_for(std::chrono::milliseconds(150));
-                          q_later = robot->receiveRobotState().q;
-                          fraction_later = executor.progress().fraction;
-                          executor.resume();
-                        });
+                        [&] { pauseHoldAndResume(executor, *robot, probe); });
     const RunReport report = executor.run(*robot, program);
     QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
   }
-  QVERIFY2(paused_at > 0.15 && paused_at < 0.95, qPrintable(QString::number(paused_at)));
-  QCOMPARE(fraction_later, paused_at);  // plan time stood still while paused
+  QVERIFY2(probe.paused_at > 0.15 && probe.paused_at < 0.95, qPrintable(QString::number(probe.paused_at)));
+  QCOMPARE(probe.fraction_later, probe.paused_at);  // plan time stood still while paused
   // Held still on the path while paused (between the start and the goal, on joint 2 only).
-  QVERIFY(maxAbsDiff(q_paused, q_later) < 1e-5);
-  QVERIFY(std::abs(q_paused[0] - goal[0]) < 1e-3);
-  QVERIFY(q_paused[1] > goal[1] + 0.1 && q_paused[1] < 1.9 - 0.1);
+  QVERIFY(maxAbsDiff(probe.q_paused, probe.q_later) < 1e-5);
+  QVERIFY(std::abs(probe.q_paused[0] - goal[0]) < 1e-3);
+  QVERIFY(probe.q_paused[1] > goal[1] + 0.1 && probe.q_paused[1] < 1.9 - 0.1);
   QVERIFY(maxAbsDiff(robot->receiveRobotState().q, goal) < kJointTolerance);
   QVERIFY(!anyError(robot->receiveRobotState()));
 }
@@ -663,33 +673,18 @@ void TestExecutor::pauseResumeAndStopDuringAPath() {
   auto robot = robotFor(*server);
   const JointPath path = gentlePath(robot->receiveRobotState().q);  // out and back but for joint 3
   Executor executor;
-  double paused_at = -1, fraction_later = -1;
-  std::array<double, 7> q_paused{}, q_later{};
+  PauseProbe probe;
   {
     WhenProgress pauser(executor, [](const Progress& p) { return p.state == RunState::kRunning && p.fraction > 0.3; },
-                        [&] {
-                          executor.pause();
-                          if (!eventually([&] { return executor.progress().state == RunState::kPaused; })) return;
-                          paused_at = executor.progress().fraction;
-                          eventually([&] {
-                            double speed = 0;
-                            for (double v : robot->receiveRobotState().dq_m) speed = std::max(speed, std::abs(v));
-                            return speed < 1e-4;
-                          });
-                          q_paused = robot->receiveRobotState().q;
-                          std::this_thread::sleep_for(std::chrono::milliseconds(150));
-                          q_later = robot->receiveRobotState().q;
-                          fraction_later = executor.progress().fraction;
-                          executor.resume();
-                        });
+                        [&] { pauseHoldAndResume(executor, *robot, probe); });
     const RunReport report = executor.run(*robot, pathProgram(path, 0.5));
     verifyFollowed(*robot, report, path);
   }
-  QVERIFY2(paused_at > 0.3 && paused_at < 0.95, qPrintable(QString::number(paused_at)));
-  QCOMPARE(fraction_later, paused_at);
-  QVERIFY(maxAbsDiff(q_paused, q_later) < 1e-5);
-  QVERIFY(maxAbsDiff(q_paused, path.q.front()) > 0.05);  // on the way, not at either end
-  QVERIFY(maxAbsDiff(q_paused, path.q.back()) > 0.05);
+  QVERIFY2(probe.paused_at > 0.3 && probe.paused_at < 0.95, qPrintable(QString::number(probe.paused_at)));
+  QCOMPARE(probe.fraction_later, probe.paused_at);
+  QVERIFY(maxAbsDiff(probe.q_paused, probe.q_later) < 1e-5);
+  QVERIFY(maxAbsDiff(probe.q_paused, path.q.front()) > 0.05);  // on the way, not at either end
+  QVERIFY(maxAbsDiff(probe.q_paused, path.q.back()) > 0.05);
 
   // Back along the path (reversed) and stopped on the way.
   JointPath back = path;

@@ -554,8 +554,7 @@ void ProgramPanel::updateRecordButton() {
   record_speed_->setEnabled(!path);
 }
 
-bool ProgramPanel::teachWithRobotTool(const QString& action) {
-  xmate::teach::Program adopted = program();
+std::string ProgramPanel::adoptRobotTool(xmate::teach::Program& adopted) const {
   xmate::teach::Payload load;
   std::array<double, 16> tool = xmate::teach::kIdentityPose;
   if (auto* robot = session().robot()) {
@@ -563,7 +562,12 @@ bool ProgramPanel::teachWithRobotTool(const QString& action) {
     robot->load(load.mass, load.center, load.inertia);
   }
   const xmate::arm::ArmState& now = session().live().arm;
-  const std::string problem = xmate::teach::adoptTool(adopted, now.sample.q, now.tcp, tool, load);
+  return xmate::teach::adoptTool(adopted, now.sample.q, now.tcp, tool, load);
+}
+
+bool ProgramPanel::teachWithRobotTool(const QString& action) {
+  xmate::teach::Program adopted = program();
+  const std::string problem = adoptRobotTool(adopted);
   if (!problem.empty()) {
     note(action + QStringLiteral(": ") + text::programProblem(problem), true);
     return false;

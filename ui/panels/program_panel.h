@@ -102,6 +102,9 @@ class ProgramPanel : public PanelBase {
   // Before a pose is taught: the first one records the robot's tool and load in the program; later
   // ones need the robot's TCP to match it. False (and the reason shown) when it does not.
   bool teachWithRobotTool(const QString& action);
+  // teach::adoptTool with the robot's tool and load (an xMate's; identity and none on a KUKA) and
+  // its measured TCP now: "" when `adopted` may be recorded into (its tool adopted if it had none).
+  std::string adoptRobotTool(xmate::teach::Program& adopted) const;
   void cancelPendingVia();
   // Shows text in the status line and writes it to the event log (Messages dock), the file's full
   // path as the detail: what was taught, opened and saved is on record.

@@ -67,16 +67,9 @@ void ProgramPanel::adoptToolForPath() {
   path_has_tool_ = false;
   if (program().has_tool) return;
   xmate::teach::Program adopted = program();
-  xmate::teach::Payload load;
-  std::array<double, 16> tool = xmate::teach::kIdentityPose;
-  if (auto* robot = session().robot()) {
-    tool = robot->toolFrame();
-    robot->load(load.mass, load.center, load.inertia);
-  }
-  const xmate::arm::ArmState& now = session().live().arm;
   // A PATH is joints only: a tool that does not match cannot make it go elsewhere, so a refusal
   // (the program has poses but no tool) leaves the program as it is.
-  if (!xmate::teach::adoptTool(adopted, now.sample.q, now.tcp, tool, load).empty() || !adopted.has_tool) return;
+  if (!adoptRobotTool(adopted).empty() || !adopted.has_tool) return;
   path_has_tool_ = true;
   path_tool_ = adopted.tool;
   path_load_ = adopted.load;
