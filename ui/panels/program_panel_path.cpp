@@ -201,7 +201,9 @@ void ProgramPanel::reportPaths(const xmate::teach::RunReport& report) {
                                                 model_->result(int(i))));
   }
   if (paths == 0) return;
-  const QString slowed = slowest < 0.995 ? tr("slowed to %1 % at most").arg(std::lround(slowest * 100)) : tr("not slowed");
+  const QString slowed = slowest < 0.995 ? tr("slowed to %1 % of the asked pace where the robot's limits required")
+                                               .arg(std::lround(slowest * 100))
+                                         : tr("not slowed");
   const QString which = paths == 1 ? tr("The path was") : tr("The %1 paths were").arg(paths);
   showStatus(statusLine()->text() + QLatin1Char(' ') +
                  tr("%1 followed within %2 mrad (%3 mm at the TCP), %4.")
