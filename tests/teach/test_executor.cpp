@@ -716,7 +716,26 @@ void TestExecutor::pathStartingElsewhereLeadsInWithAJointMove() {
   ExecutorOptions options;
   options.on_notices = [&](const std::vector<Problem>& notices) { announced = notices; };
   Executor executor;
+  // One progress for the instruction, lead-in and path: it never goes back.
+  std::atomic<bool> done{false};
+  double went_back = 0, highest = 0;
+  std::thread watcher([&] {
+    double previous = 0;
+    while (!done.load()) {
+      const Progress p = executor.progress();
+      if (p.state == RunState::kRunning && p.instruction == 0) {
+        went_back = std::max(went_back, previous - p.fraction);
+        previous = p.fraction;
+        highest = std::max(highest, p.fraction);
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+  });
   const RunReport report = executor.run(*robot, pathProgram(path, 1.0, "wipe"), options);
+  done.store(true);
+  watcher.join();
+  QVERIFY2(went_back < 1e-9, qPrintable(QString::number(went_back)));
+  QVERIFY(highest > 0.5);
   verifyFollowed(*robot, report, path);
   QCOMPARE(report.notices.size(), size_t(1));
   QCOMPARE(report.notices[0].message, std::string("instruction 1 (PATH \"wipe\"): first moves to the start of the path "

@@ -163,8 +163,15 @@ class Executor {
   std::atomic<int> state_{int(RunState::kIdle)};
   std::atomic<long> instruction_{-1};
   std::atomic<double> fraction_{0};
+  // The part of the instruction's progress a motion fills (0..1 by default): a PATH's lead-in and
+  // its path share one progress. Set on the run's thread before a motion starts.
+  double fraction_from_ = 0, fraction_span_ = 1;
 
   void setState(RunState s) { state_.store(int(s)); }
+  // A motion's progress (0..1) as the instruction's. Real-time safe.
+  void storeMotionFraction(double f) {
+    fraction_.store(fraction_from_ + fraction_span_ * f, std::memory_order_relaxed);
+  }
   // stop() was called or the options' stop token is set. Real-time safe.
   bool stopping() const {
     return stop_requested_.load(std::memory_order_relaxed) ||

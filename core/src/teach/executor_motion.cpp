@@ -208,7 +208,7 @@ bool Executor::streamJointPlan(Plan& plan, Clock& clock, double share, OnState o
       bridge.startAt(s.message_id, s.q_c);  // the "hold still" command the controller has now
     }
     on_state(s, t);
-    fraction_.store(std::min(1.0, t / plan.total()), std::memory_order_relaxed);
+    storeMotionFraction(std::min(1.0, t / plan.total()));
     JointPositions out;
     if (stoppedHere(clock.scaling) && !bridge.bridging()) {
       stopped = true;
@@ -310,7 +310,7 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
         const double t = clock.advance(s, scalingTarget(clock.scaling));
         if (starting && clock.calls == 1)
           bridge.startAt(s.message_id, client::cartesianCoordinates(s.toolTobase_pos_c, s.psi_c, reference));
-        fraction_.store(std::min(1.0, t / total), std::memory_order_relaxed);
+        storeMotionFraction(std::min(1.0, t / total));
         if (stoppedHere(clock.scaling) && !bridge.bridging()) {
           stopped = true;
           return MotionFinished(last);

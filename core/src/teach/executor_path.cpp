@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planning/joint_line.h"
 #include "teach/executor.h"
 #include "teach/executor_path.h"
 #include "teach/path.h"
 #include "teach/path_timing.h"
 #include "teach/robot_port.h"
+#include "teach/targets.h"
 
 namespace xmate::teach {
 
@@ -53,7 +55,23 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
   report.slowed_share = timing.slowed_share;
   report.slowest_at = timing.slowest_at;
   if (stream_) checkRsiPath(timing, in.path.rate_hz);  // before anything moves
+
+  // One progress for the instruction: the lead-in's share of it as long as its joint move takes
+  // (the same planner as the move itself), the path the rest.
+  struct WholeProgress {
+    double& from;
+    double& span;
+    ~WholeProgress() { from = 0, span = 1; }
+  } whole{fraction_from_, fraction_span_};
+  const JointPoint q_now = port_->read().q;
+  const double lead = largestJointChange(q_now, in.path.q.front(), spec.dof) > kPathLeadIn
+                          ? planning::planJointLine(spec, q_now, in.path.q.front(), in.speed * kSpeedShare)
+                                .profile.duration
+                          : 0.0;
+  fraction_span_ = lead + timing.duration > 0 ? lead / (lead + timing.duration) : 0.0;
   if (!leadIn(program, in, report)) return;
+  fraction_from_ = fraction_span_;
+  fraction_span_ = 1 - fraction_from_;
 
   PathRecording recording(timing);
   if (robot_) streamPath(timing, recording, report);

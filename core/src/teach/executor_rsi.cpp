@@ -234,7 +234,7 @@ void Executor::streamRsiGrid(const client::JointSamples& grid, double share, boo
     scaling.setTarget(scalingTarget(scaling));
     scaling.step(dt);
     plan_time = std::min(total, plan_time + scaling.value() * dt);
-    fraction_.store(total > 0 ? plan_time / total : 1.0, std::memory_order_relaxed);
+    storeMotionFraction(total > 0 ? plan_time / total : 1.0);
     if (stoppedHere(scaling)) {
       stopped = true;
       q = last;
