@@ -35,16 +35,6 @@ void PathRecording::add(double plan_time, const JointPoint& measured) {
   hints_.push_back(timing_.path_time[i] + f * (timing_.path_time[j] - timing_.path_time[i]));
 }
 
-namespace {
-
-double largestJointChange(const JointPoint& a, const JointPoint& b, int dof) {
-  double m = 0;
-  for (int j = 0; j < dof; ++j) m = std::max(m, std::abs(a[size_t(j)] - b[size_t(j)]));
-  return m;
-}
-
-}  // namespace
-
 void Executor::runPath(const Program& program, size_t index, InstructionReport& report) {
   const Instruction& in = program.instructions[index];
   const model::RobotSpec& spec = port_->spec();
