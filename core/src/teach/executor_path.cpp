@@ -54,12 +54,11 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
     ~WholeProgress() { from = 0, span = 1; }
   } whole{fraction_from_, fraction_span_};
   const JointPoint q_now = port_->read().q;
-  const double lead = largestJointChange(q_now, in.path.q.front(), spec.dof) > kPathLeadIn
-                          ? planning::planJointLine(spec, q_now, in.path.q.front(), in.speed * kSpeedShare)
-                                .profile.duration
-                          : 0.0;
+  const bool lead_in = largestJointChange(q_now, in.path.q.front(), spec.dof) > kPathLeadIn;
+  const double lead =
+      lead_in ? planning::planJointLine(spec, q_now, in.path.q.front(), in.speed * kSpeedShare).profile.duration : 0.0;
   fraction_span_ = lead + timing.duration > 0 ? lead / (lead + timing.duration) : 0.0;
-  if (!leadIn(program, in, report)) return;
+  if (lead_in && !leadIn(program, in, report)) return;
   fraction_from_ = fraction_span_;
   fraction_span_ = 1 - fraction_from_;
 
@@ -75,7 +74,6 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
 
 bool Executor::leadIn(const Program& program, const Instruction& in, InstructionReport& report) {
   const JointPoint& start = in.path.q.front();
-  if (largestJointChange(port_->read().q, start, port_->spec().dof) <= kPathLeadIn) return true;
   Instruction move;  // a MOVEJ to the first sample, at the PATH's speed
   move.type = InstructionType::kMoveJ;
   move.name = in.name;
