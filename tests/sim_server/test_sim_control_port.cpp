@@ -178,6 +178,74 @@ class TestSimControlPort : public QObject {
     QCOMPARE(server->status().sim.safety_stop, 1);
   }
 
+  // "loss ..." starts a random loss that keeps running; "loss off" ends it, and the stream is whole again.
+  void stateLossRunsUntilSwitchedOff() {
+    auto server = startServer();
+    sim::ControlPort port(*server, "127.0.0.1", 0);
+    port.start();
+    ControlClient control(port.port());
+    auto client = connectedClient(*server);
+
+    QCOMPARE(control.ask("loss states 20% pairs 50% seed 3"),
+             std::string("ok losing 20 % of the states at random, 50 % of the losses in pairs; seed 3"));
+    QCOMPARE(field(control.ask("status"), "loss"), QString("20%,pairs=50%,seed=3"));
+    QVERIFY(eventually([&] { return server->status().counters.loss_pairs >= 10; }));
+    const std::string off = control.ask("loss off");
+    QVERIFY2(off.starts_with("ok state loss off (") && off.ends_with(" states lost so far)"), off.c_str());
+    const std::string status = control.ask("status");
+    QCOMPARE(field(status, "loss"), QString("off"));
+    const uint64_t lost = server->status().counters.states_lost;
+    QCOMPARE(field(status, "states_lost"), QString::number(lost));
+    QVERIFY(field(status, "loss_singles").toInt() > 0);
+
+    const uint64_t first_clean = server->status().message_id;
+    std::optional<RCI::robot::RobotState> s;
+    do {
+      s = client->receiveState(5000);
+      QVERIFY(s.has_value());
+    } while (s->message_id < first_clean);
+    for (int i = 0; i < 500; ++i) {
+      const uint64_t before = s->message_id;
+      s = client->receiveState(5000);
+      QVERIFY(s.has_value());
+      QCOMPARE(s->message_id, before + 1);
+    }
+    QCOMPARE(server->status().counters.states_lost, lost);
+
+    QCOMPARE(control.ask("loss burst 5 every 10000"), std::string("ok losing 5 states in a row every 10000 ms; seed 1"));
+    QCOMPARE(control.ask("loss states 2% pairs 30% burst 5 every 10000 seed 7"),
+             std::string("ok losing 2 % of the states at random, 30 % of the losses in pairs, and 5 states in a "
+                         "row every 10000 ms; seed 7"));
+    QCOMPARE(field(control.ask("status"), "loss"), QString("2%,pairs=30%,burst=5/10000ms,seed=7"));
+  }
+
+  void badLossArgumentsAreRefusedNamingTheProblem() {
+    auto server = startServer();
+    sim::ControlPort port(*server, "127.0.0.1", 0);
+    port.start();
+    ControlClient control(port.port());
+    const std::string usage =
+        "; usage: loss states P% [pairs S%] [burst B every MS] [seed N] (until loss off) | loss off";
+    const std::pair<const char*, std::string> cases[] = {
+        {"loss", "error loss: expected 'off' or what to lose" + usage},
+        {"loss sometimes", "error loss: expected states, pairs, burst or seed, got 'sometimes'" + usage},
+        {"loss states 70%", "error loss: P must be a percentage from 0 to 50, got '70%'" + usage},
+        {"loss states two", "error loss: P must be a percentage from 0 to 50, got 'two'" + usage},
+        {"loss states", "error loss: 'states' needs P%" + usage},
+        {"loss states 2% pairs x", "error loss: S must be a percentage from 0 to 100, got 'x'" + usage},
+        {"loss states 2% states 3%", "error loss: 'states' is given twice" + usage},
+        {"loss pairs 30%", "error loss: say which states to lose: 'states P%', 'burst B every MS' or both" + usage},
+        {"loss states 2% burst 5", "error loss: 'burst' needs B every MS" + usage},
+        {"loss states 2% burst 5 each 100", "error loss: expected 'every' after the burst's length, got 'each'" + usage},
+        {"loss burst 0 every 100", "error loss: B must be a whole number from 1 to 10000, got '0'" + usage},
+        {"loss states 2% seed -1", "error loss: N must be a whole number from 0 to 2147483647, got '-1'" + usage},
+        {"loss burst 5 every 5", "error loss: setStateLoss: a burst of 5 states needs a period of 6..3600000 ms, got 5"},
+    };
+    for (const auto& [line, expected] : cases) QCOMPARE(QString::fromStdString(control.ask(line)), QString::fromStdString(expected));
+    QVERIFY(control.ask("help").find("| loss states P% [pairs S%] [burst B every MS] [seed N]") != std::string::npos);
+    QCOMPARE(field(control.ask("status"), "loss"), QString("off"));  // nothing above started a loss
+  }
+
   void killAndRestartThroughTheControlPort() {
     auto server = startServer();
     sim::ControlPort port(*server, "127.0.0.1", 0);

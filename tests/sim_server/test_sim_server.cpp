@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // Tests of sim::Server over real loopback sockets with a raw client: the Connect handshake, the
-// 1 kHz stream, lock-step stepping and lost answers, every packet fault as seen on the wire,
-// session rules (one at a time, the busy answer naming the holder, idle connections and silent
-// sessions giving way), reboot, kill, and the bind failure message.
+// 1 kHz stream, lock-step stepping and lost answers, every packet fault as seen on the wire (the
+// random state loss too), session rules (one at a time, the busy answer naming the holder, idle
+// connections and silent sessions giving way), reboot, kill, and the bind failure message.
 #include <QtTest>
 
 #include <arpa/inet.h>
 
+#include <cmath>
 #include <cstring>
+#include <functional>
+#include <map>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -15,6 +18,7 @@
 #include <xmate/exception.h>
 #include <xmate/robot.h>
 
+#include "sim/server_faults.h"
 #include "test_support.h"
 
 using namespace simtest;
@@ -75,6 +79,26 @@ RobotState awaitWantedState(RawClient& client, const sim::Server& server) {
 }
 
 uint8_t wireSafetyStop(RawClient& client) { return client.requestByte(Command::kGetSafetyStopState); }
+
+// The gaps in a stream of message_ids, by the number of states missing in a row.
+std::map<uint64_t, int> gapsByLength(const std::vector<uint64_t>& ids) {
+  std::map<uint64_t, int> gaps;
+  for (size_t i = 1; i < ids.size(); ++i)
+    if (ids[i] > ids[i - 1] + 1) ++gaps[ids[i] - ids[i - 1] - 1];
+  return gaps;
+}
+
+// Answers every state (holding the arm) until `until` says stop; returns the message_ids seen.
+std::vector<uint64_t> answerEveryState(RawClient& client, const std::function<bool(uint64_t id)>& until) {
+  std::vector<uint64_t> ids;
+  for (;;) {
+    const std::optional<RobotState> s = client.receiveState(5000);
+    if (!s) throw std::runtime_error("the stream stopped after " + std::to_string(ids.size()) + " states");
+    client.answer(*s);
+    ids.push_back(s->message_id);
+    if (until(s->message_id)) return ids;
+  }
+}
 
 }  // namespace
 
@@ -177,6 +201,76 @@ class TestSimServer : public QObject {
     QCOMPARE(gaps_of_five, 1);
     QCOMPARE(server->status().counters.states_dropped, uint64_t(5));
     QCOMPARE(server->status().pending.drop_states, 0);
+  }
+
+  // 2 % of the states lost at random, 30 % of the losses pairs, a burst of 5 every 5000 states, over
+  // 20000 states of a motion on the lock-step clock: the wire shows exactly the losses the counters
+  // report, singles, pairs and bursts only (a sent state after each), at about the rates asked.
+  void randomStateLossFollowsItsSetting() {
+    auto server = startServer(lockStepConfig(5));  // a lost state's cycle waits 5 ms for its answer
+    auto client = connectedClient(*server);
+    startJointMotion(*client);
+    client->answer(awaitWantedState(*client, *server));
+    server->setStateLoss({0.02, 0.3, 5, 5000, 7});
+    QCOMPARE(server->status().state_loss.seed, uint32_t(7));
+    const uint64_t first = server->status().message_id;
+    std::vector<uint64_t> ids = answerEveryState(*client, [&](uint64_t id) { return id >= first + 20000; });
+    server->setStateLoss({});
+    const uint64_t off = server->status().message_id;
+    const std::vector<uint64_t> tail = answerEveryState(*client, [&](uint64_t id) { return id > off + 100; });
+    ids.insert(ids.end(), tail.begin(), tail.end());
+
+    const sim::ServerCounters c = server->status().counters;
+    std::map<uint64_t, int> gaps = gapsByLength(ids);
+    QCOMPARE(uint64_t(gaps[1]), c.loss_singles);
+    QCOMPARE(uint64_t(gaps[2]), c.loss_pairs);
+    QCOMPARE(uint64_t(gaps[5]), c.loss_bursts);
+    QCOMPARE(gaps.size(), size_t(3));  // no other lengths: losses never merge
+    QCOMPARE(c.states_lost, c.loss_singles + 2 * c.loss_pairs + 5 * c.loss_bursts);
+    QCOMPARE(c.states_dropped, c.states_lost);
+    QVERIFY2(c.loss_bursts == 3 || c.loss_bursts == 4, qPrintable(QString::number(c.loss_bursts)));
+    const double states = double(off - first);
+    const double random_share = double(c.loss_singles + 2 * c.loss_pairs) / states;
+    QVERIFY2(random_share > 0.015 && random_share < 0.025, qPrintable(QString::number(random_share)));
+    const double pair_share = double(c.loss_pairs) / double(c.loss_singles + c.loss_pairs);
+    QVERIFY2(pair_share > 0.22 && pair_share < 0.38, qPrintable(QString::number(pair_share)));
+    QVERIFY(!server->status().state_loss.active());
+  }
+
+  // The pattern depends on the seed alone: the same seed gives the same losses, another seed others.
+  void stateLossIsTheSameForTheSameSeed() {
+    const auto pattern = [](uint32_t seed) {
+      sim::LossRun run;
+      sim::ServerCounters counters;
+      sim::startStateLoss(run, {0.02, 0.3, 5, 1000, seed});
+      std::vector<bool> lost(20000);
+      for (size_t i = 0; i < lost.size(); ++i) lost[i] = sim::nextStateLost(run, counters);
+      return lost;
+    };
+    QVERIFY(pattern(7) == pattern(7));
+    QVERIFY(pattern(7) != pattern(8));
+  }
+
+  void badStateLossIsRefusedNamingTheValue() {
+    auto server = startServer();
+    const std::pair<sim::StateLoss, const char*> cases[] = {
+        {{0.7, 0, 0, 0, 1}, "setStateLoss: the loss probability must be 0..0.5 (0..50 %), got 0.7"},
+        {{std::nan(""), 0, 0, 0, 1}, "setStateLoss: the loss probability must be 0..0.5 (0..50 %), got nan"},
+        {{0.02, 1.5, 0, 0, 1}, "setStateLoss: the share of pairs must be 0..1 (0..100 %), got 1.5"},
+        {{0, 0, 5, 0, 1}, "setStateLoss: a burst needs both its length and its period (or neither), got 5 states "
+                          "every 0 ms"},
+        {{0, 0, 5, 5, 1}, "setStateLoss: a burst of 5 states needs a period of 6..3600000 ms, got 5"},
+        {{0, 0, 20000, 100000, 1}, "setStateLoss: a burst must be 0..10000 states, got 20000"},
+    };
+    for (const auto& [loss, expected] : cases) {
+      try {
+        server->setStateLoss(loss);
+        QFAIL(expected);
+      } catch (const std::invalid_argument& e) {
+        QCOMPARE(QString(e.what()), QString(expected));
+      }
+    }
+    QVERIFY(!server->status().state_loss.active());
   }
 
   void reorderedStatesArriveWithPairsSwapped() {

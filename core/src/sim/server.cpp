@@ -70,6 +70,7 @@ void publishSnapshot(Server::Impl& s) {
   s.snapshot.streaming = s.streaming;
   s.snapshot.rebooting = s.rebooting;
   s.snapshot.pending = pendingFaults(s.state_faults, s.command_faults);
+  s.snapshot.state_loss = s.state_faults.loss.config;
   s.snapshot.counters = s.counters;
   if (s.controller) {
     s.snapshot.sim = s.controller->status();
@@ -331,6 +332,12 @@ void Server::sendWrongLengthStates(int count) {
   runOnCycleThread(s, [&] { addCount(s.state_faults.wrong_length, count); });
 }
 
+void Server::setStateLoss(const StateLoss& loss) {
+  checkStateLoss("setStateLoss", loss);
+  Impl& s = *impl_;
+  runOnCycleThread(s, [&] { startStateLoss(s.state_faults.loss, loss); });
+}
+
 // ---- Observation ------------------------------------------------------------------------------------
 
 ServerStatus Server::status() const {
@@ -348,6 +355,7 @@ ServerStatus Server::status() const {
   st.realtime = s.realtime_text;
   st.last_refusal = s.last_refusal;
   st.pending = s.snapshot.pending;
+  st.state_loss = s.snapshot.state_loss;
   st.counters = s.snapshot.counters;
   st.counters.clients_refused = s.clients_refused;
   st.counters.sessions_dropped = s.sessions_dropped;

@@ -57,11 +57,32 @@ struct PendingFaults {
   int wrong_length_states = 0;   // states kWrongLengthDelta bytes short (as from another version)
 };
 
+// A random loss pattern for the state stream that keeps running until switched off (a default
+// StateLoss is off): about `probability` of the states are lost at random, as single states or, for
+// `pair_share` of the losses, two in a row; and every `burst_every_ms` states (ms of streaming) a
+// burst of `burst_states` in a row. A sent state always follows a loss, so losses never merge.
+// Seeded: the same seed gives the same pattern (docs/simulator.md, "Random state loss").
+struct StateLoss {
+  double probability = 0;  // 0..0.5 (0.02 = 2 %); the bursts come on top
+  double pair_share = 0;   // 0..1 of the random losses
+  int burst_states = 0;    // 0 (no bursts) .. kMaxBurstStates
+  int burst_every_ms = 0;  // with burst_states: more than burst_states, at most kMaxBurstEveryMs
+  uint32_t seed = 1;
+  bool active() const { return probability > 0 || burst_states > 0; }
+};
+inline constexpr double kMaxLossProbability = 0.5;
+inline constexpr int kMaxBurstStates = 10'000;
+inline constexpr int kMaxBurstEveryMs = 3'600'000;
+
 // Everything the server counted since start().
 struct ServerCounters {
   uint64_t cycles = 0;               // controller steps
   uint64_t states_sent = 0;          // RobotState datagrams sent, faulty ones included
-  uint64_t states_dropped = 0;
+  uint64_t states_dropped = 0;       // by dropStates and by the loss pattern
+  uint64_t states_lost = 0;          // of those, by the loss pattern (setStateLoss) ...
+  uint64_t loss_singles = 0;         // ... in its losses of one state,
+  uint64_t loss_pairs = 0;           // of two in a row,
+  uint64_t loss_bursts = 0;          // and its bursts
   uint64_t states_reordered = 0;
   uint64_t states_corrupted = 0;
   uint64_t states_wrong_length = 0;
@@ -89,6 +110,7 @@ struct ServerStatus {
   ClockMode clock = ClockMode::kRealTime;
   std::string realtime;     // what the cycle thread got: "SCHED_FIFO 80, memory locked" / "normal priority (...)"
   PendingFaults pending;
+  StateLoss state_loss;     // the loss pattern in effect (default: off)
   ServerCounters counters;
   SimStatus sim;            // the controller's own snapshot
   std::string last_refusal; // why the controller last refused a TCP request ("" if none yet)
@@ -141,6 +163,9 @@ class Server {
   void reorderStates(int count);  // rounded up to an even number: pairs are swapped
   void corruptStates(int count);
   void sendWrongLengthStates(int count);
+  // Starts the random loss pattern (replacing the one running, its generator seeded afresh); a
+  // default StateLoss switches it off. Throws std::invalid_argument naming a value out of range.
+  void setStateLoss(const StateLoss& loss);
   // Controller death: stops the stream and the cycle, closes the TCP session abruptly and stops
   // listening (connections are refused) until stop() + start().
   void kill();

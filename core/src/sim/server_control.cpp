@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -28,6 +29,16 @@ std::string bits(const std::array<bool, 6>& b) {
   std::string s;
   for (bool v : b) s += v ? '1' : '0';
   return s;
+}
+
+// "off" or "2%,pairs=30%,burst=5/10000ms,seed=7": the loss pattern as one status value.
+std::string lossText(const StateLoss& loss) {
+  if (!loss.active()) return "off";
+  std::ostringstream o;
+  o << loss.probability * 100 << "%,pairs=" << loss.pair_share * 100 << "%";
+  if (loss.burst_states > 0) o << ",burst=" << loss.burst_states << "/" << loss.burst_every_ms << "ms";
+  o << ",seed=" << loss.seed;
+  return o.str();
 }
 
 const char* safetyStopName(int api_value) {
@@ -83,6 +94,86 @@ std::string runDelay(Server& server, const Words& w) {
   const int ms = parseInteger(w[3], "MS", 0, kMaxFaultDelayMs);
   server.delayCommands(n, ms);
   return "delaying the next " + std::to_string(n) + " commands by " + std::to_string(ms) + " ms";
+}
+
+// "2%" or "2" -> 0.02; a percentage from 0 to max_percent, else ControlUsageError naming `what`.
+double parsePercent(std::string_view word, const char* what, double max_percent) {
+  const std::string_view number = word.ends_with('%') ? word.substr(0, word.size() - 1) : word;
+  double value = -1;
+  const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+  if (ec != std::errc() || end != number.data() + number.size() || !(value >= 0 && value <= max_percent))
+    throw UsageError(std::string(what) + " must be a percentage from 0 to " + std::to_string(int(max_percent)) +
+                     ", got '" + std::string(word) + "'");
+  return value / 100;
+}
+
+// The clauses of "loss ..." after the word "loss": states P%, pairs S%, burst B every MS, seed N,
+// each at most once, in any order; states or burst must be among them.
+StateLoss parseStateLoss(const Words& w) {
+  StateLoss loss;
+  bool states = false, pairs = false, burst = false, seed = false;
+  auto once = [](bool& given, std::string_view clause) {
+    if (given) throw UsageError("'" + std::string(clause) + "' is given twice");
+    given = true;
+  };
+  auto value = [&](size_t at, std::string_view clause, const char* takes) {
+    if (at >= w.size()) throw UsageError("'" + std::string(clause) + "' needs " + takes);
+    return w[at];
+  };
+  for (size_t i = 1; i < w.size();) {
+    const std::string_view clause = w[i];
+    if (clause == "states") {
+      once(states, clause);
+      loss.probability = parsePercent(value(i + 1, clause, "P%"), "P", kMaxLossProbability * 100);
+      i += 2;
+    } else if (clause == "pairs") {
+      once(pairs, clause);
+      loss.pair_share = parsePercent(value(i + 1, clause, "S%"), "S", 100);
+      i += 2;
+    } else if (clause == "burst") {
+      once(burst, clause);
+      loss.burst_states = parseInteger(value(i + 1, clause, "B every MS"), "B", 1, kMaxBurstStates);
+      if (value(i + 2, clause, "B every MS") != "every")
+        throw UsageError("expected 'every' after the burst's length, got '" + std::string(w[i + 2]) + "'");
+      loss.burst_every_ms = parseInteger(value(i + 3, clause, "B every MS"), "MS", 1, kMaxBurstEveryMs);
+      i += 4;
+    } else if (clause == "seed") {
+      once(seed, clause);
+      loss.seed = uint32_t(parseInteger(value(i + 1, clause, "N"), "N", 0, std::numeric_limits<int>::max()));
+      i += 2;
+    } else {
+      throw UsageError("expected states, pairs, burst or seed, got '" + std::string(clause) + "'");
+    }
+  }
+  if (!states && !burst) throw UsageError("say which states to lose: 'states P%', 'burst B every MS' or both");
+  return loss;
+}
+
+// "losing 2 % of the states at random, 30 % of the losses in pairs, and 5 states in a row every 10000 ms; seed 7"
+std::string lossAnswer(const StateLoss& loss) {
+  std::string answer;
+  if (loss.probability > 0) {
+    char text[120];
+    std::snprintf(text, sizeof text, "losing %g %% of the states at random, %g %% of the losses in pairs",
+                  loss.probability * 100, loss.pair_share * 100);
+    answer = text;
+  }
+  if (loss.burst_states > 0)
+    answer += (answer.empty() ? "losing " : ", and ") + std::to_string(loss.burst_states) + " states in a row every " +
+              std::to_string(loss.burst_every_ms) + " ms";
+  return answer + "; seed " + std::to_string(loss.seed);
+}
+
+// "loss states 2% pairs 30% burst 5 every 10000 seed 7" / "loss off"
+std::string runLoss(Server& server, const Words& w) {
+  if (w.size() == 2 && w[1] == "off") {
+    server.setStateLoss({});
+    return "state loss off (" + std::to_string(server.status().counters.states_lost) + " states lost so far)";
+  }
+  if (w.size() < 2) throw UsageError("expected 'off' or what to lose");
+  const StateLoss loss = parseStateLoss(w);
+  server.setStateLoss(loss);
+  return lossAnswer(loss);
 }
 
 // "payload KG [CX CY CZ]" (a point mass) or "payload follow"
@@ -151,6 +242,7 @@ const std::vector<ControlCommand<Server>>& commands() {
        [](Server& s, const Words& w) {
          return runCountFault(w, "states", "shortening", kMaxFaultCount, [&](int n) { s.sendWrongLengthStates(n); });
        }},
+      {"loss", "loss states P% [pairs S%] [burst B every MS] [seed N] (until loss off) | loss off", runLoss},
       {"status", "status", runStatus},
       {"kill", "kill", runKill},
       {"restart", "restart (power-cycles the controller after a kill)", runRestart},
@@ -188,7 +280,9 @@ std::string formatStatus(const ServerStatus& st) {
     << " sessions_dropped=" << c.sessions_dropped << " pending_drop_states=" << p.drop_states
     << " pending_drop_commands=" << p.drop_commands << " pending_delay_commands=" << p.delay_commands
     << " pending_reorder_states=" << p.reorder_states << " pending_corrupt_states=" << p.corrupt_states
-    << " pending_badlength_states=" << p.wrong_length_states;
+    << " pending_badlength_states=" << p.wrong_length_states << " states_lost=" << c.states_lost
+    << " loss_singles=" << c.loss_singles << " loss_pairs=" << c.loss_pairs << " loss_bursts=" << c.loss_bursts
+    << " loss=" << lossText(st.state_loss);
   return o.str();
 }
 

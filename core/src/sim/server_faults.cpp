@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Packet fault countdowns and state corruption (see server_faults.h).
+// Packet fault countdowns, the random state loss and state corruption (see server_faults.h).
 #include "sim/server_faults.h"
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +11,10 @@ namespace xmate::sim {
 StateFate applyStateFaults(StateFaults& faults, OutgoingState& out, ServerCounters& counters) {
   if (faults.drop > 0) {
     --faults.drop;
+    ++counters.states_dropped;
+    return StateFate::kDrop;
+  }
+  if (nextStateLost(faults.loss, counters)) {
     ++counters.states_dropped;
     return StateFate::kDrop;
   }
@@ -34,6 +39,91 @@ StateFate applyStateFaults(StateFaults& faults, OutgoingState& out, ServerCounte
     return StateFate::kHold;
   }
   return StateFate::kSend;
+}
+
+namespace {
+
+// splitmix64: a small, fast generator whose whole state is one word (seeded from any value).
+uint64_t nextRandom(uint64_t& state) {
+  uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+// Uniform in [0, 1).
+double nextUniform(uint64_t& state) { return double(nextRandom(state) >> 11) * 0x1.0p-53; }
+
+// Starts a loss of `states` states with this one; returns true (it is lost).
+bool beginLoss(LossRun& run, int states, ServerCounters& counters) {
+  run.remaining = states - 1;
+  run.rest = run.remaining == 0;
+  ++counters.states_lost;
+  return true;
+}
+
+std::string formatValue(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+}  // namespace
+
+void startStateLoss(LossRun& run, const StateLoss& loss) {
+  run = LossRun{};
+  run.config = loss;
+  run.random = loss.seed;
+  // A loss of mean length L = 1 + pair_share starts with chance c at each state neither in nor right
+  // after a loss. Between two losses come (1 - c) / c sent states on average, then L lost and the
+  // one sent after them: the lost share L / ((1 - c) / c + L + 1) is p for c = p / (L (1 - p)).
+  const double mean_length = 1 + loss.pair_share;
+  if (loss.probability > 0) run.start_chance = loss.probability / (mean_length * (1 - loss.probability));
+}
+
+bool nextStateLost(LossRun& run, ServerCounters& counters) {
+  const StateLoss& c = run.config;
+  if (!c.active()) return false;
+  if (c.burst_states > 0) ++run.since_burst;  // restarts at every burst: it never overflows
+  if (run.remaining > 0) {
+    run.rest = --run.remaining == 0;
+    ++counters.states_lost;
+    return true;
+  }
+  if (run.rest) {
+    run.rest = false;
+    return false;
+  }
+  if (c.burst_states > 0 && run.since_burst >= c.burst_every_ms) {
+    run.since_burst = 0;
+    ++counters.loss_bursts;
+    return beginLoss(run, c.burst_states, counters);
+  }
+  if (run.start_chance <= 0 || nextUniform(run.random) >= run.start_chance) return false;
+  const bool pair = nextUniform(run.random) < c.pair_share;
+  ++(pair ? counters.loss_pairs : counters.loss_singles);
+  return beginLoss(run, pair ? 2 : 1, counters);
+}
+
+void checkStateLoss(const char* call, const StateLoss& loss) {
+  const std::string prefix = std::string(call) + ": ";
+  if (!(loss.probability >= 0 && loss.probability <= kMaxLossProbability))
+    throw std::invalid_argument(prefix + "the loss probability must be 0.." + formatValue(kMaxLossProbability) +
+                                " (0..50 %), got " + formatValue(loss.probability));
+  if (!(loss.pair_share >= 0 && loss.pair_share <= 1))
+    throw std::invalid_argument(prefix + "the share of pairs must be 0..1 (0..100 %), got " +
+                                formatValue(loss.pair_share));
+  if (loss.burst_states < 0 || loss.burst_states > kMaxBurstStates)
+    throw std::invalid_argument(prefix + "a burst must be 0.." + std::to_string(kMaxBurstStates) + " states, got " +
+                                std::to_string(loss.burst_states));
+  if ((loss.burst_states == 0) != (loss.burst_every_ms == 0))
+    throw std::invalid_argument(prefix + "a burst needs both its length and its period (or neither), got " +
+                                std::to_string(loss.burst_states) + " states every " +
+                                std::to_string(loss.burst_every_ms) + " ms");
+  if (loss.burst_states > 0 && (loss.burst_every_ms <= loss.burst_states || loss.burst_every_ms > kMaxBurstEveryMs))
+    throw std::invalid_argument(prefix + "a burst of " + std::to_string(loss.burst_states) +
+                                " states needs a period of " + std::to_string(loss.burst_states + 1) + ".." +
+                                std::to_string(kMaxBurstEveryMs) + " ms, got " + std::to_string(loss.burst_every_ms));
 }
 
 void corruptRobotState(protocol::RobotStateBuffer& bytes) {

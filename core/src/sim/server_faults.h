@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Packet faults of the simulated controller: countdowns that decide the fate of the next state and
-// command datagrams, and the byte surgery that makes a state undecodable. No I/O: the cycle thread
-// (server_cycle.cpp) asks and acts.
+// command datagrams, the random state loss, and the byte surgery that makes a state undecodable.
+// No I/O: the cycle thread (server_cycle.cpp) asks and acts.
 #pragma once
 
 #include <cstddef>
@@ -25,6 +25,16 @@ struct OutgoingState {
   size_t size = protocol::kRobotStateSize;
 };
 
+// The random loss pattern as it runs (StateLoss): its setting, generator and position.
+struct LossRun {
+  StateLoss config;
+  uint64_t random = 0;      // splitmix64 state, from the seed
+  double start_chance = 0;  // per state that may be lost: the chance that a random loss starts there
+  int remaining = 0;        // states of the current loss still to drop
+  bool rest = false;        // the state after a loss is sent
+  int since_burst = 0;      // states since the pattern started or the last burst began
+};
+
 struct StateFaults {
   int drop = 0;
   int reorder = 0;  // datagrams left to reorder, even while no datagram is held
@@ -32,6 +42,7 @@ struct StateFaults {
   int wrong_length = 0;
   bool holding = false;  // the first of a swapped pair waits here for the second
   OutgoingState held;
+  LossRun loss;
 };
 
 struct DelayedCommand {
@@ -57,6 +68,13 @@ enum class StateFate {
 // Decides the fate of one state, applies corruption or shortening to out, and counts both in
 // counters. out must hold the freshly encoded state.
 StateFate applyStateFaults(StateFaults& faults, OutgoingState& out, ServerCounters& counters);
+
+// Starts `loss` on `run` from its beginning (generator seeded, first burst burst_every_ms away).
+void startStateLoss(LossRun& run, const StateLoss& loss);
+// Whether the loss pattern drops the next state; counts what it starts in counters. Allocation-free.
+bool nextStateLost(LossRun& run, ServerCounters& counters);
+// Throws std::invalid_argument naming the call, the value out of range and the allowed range.
+void checkStateLoss(const char* call, const StateLoss& loss);
 
 // Makes an encoded state fail decodeRobotState with kBadValue: errors[0] becomes a bool that is
 // neither 0 nor 1 and robot_mode an enum value out of range. The length is unchanged.

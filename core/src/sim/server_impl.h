@@ -45,6 +45,7 @@ struct Snapshot {
   bool rebooting = false;
   uint64_t awaiting_answer_to = 0;
   PendingFaults pending;
+  StateLoss state_loss;
   ServerCounters counters;
   SimStatus sim;
   RCI::robot::RobotState state;
