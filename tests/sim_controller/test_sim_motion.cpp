@@ -95,6 +95,7 @@ class TestSimMotion : public QObject {
   void successRateCountsTheLastHundred();
   void instabilityAfterTooManyLostCommands();
   void stepIsCheapAndDoesNotAllocate();
+  void armAngleLimitsOfGuidingDoNotAllocate();
 };
 
 void TestSimMotion::holdsStillWithMotorsOn() {
@@ -540,6 +541,29 @@ void TestSimMotion::stepIsCheapAndDoesNotAllocate() {
   h.idle(1000);
   QCOMPARE(planning_test::allocationCount() - before, std::size_t(0));
   QVERIFY2(!h.anyError(), h.errorList().c_str());
+}
+
+void TestSimMotion::armAngleLimitsOfGuidingDoNotAllocate() {
+  // The 7-axis arm-angle limits of hand guiding at work (test_sim_walls): the wrist-axis hold (guiding
+  // started 2.5 cm from the J1 axis, pushed towards it) and the arm-angle speed limit (a pull that
+  // would swing the elbow past its rate monitor).
+  struct Case {
+    std::array<double, 7> q_deg;
+    std::array<double, 6> wrench;
+  };
+  for (const Case& c : {Case{{0, -11.4, 0, 20, 0, 60, 0}, {60, 0, 0, 0, 0, 0}},
+                        Case{{20, -20, 30, 80, -10, 60, 30}, {-34.6, -34.6, -34.6, 0, 0, 0}}}) {
+    SimConfig config;
+    for (size_t i = 0; i < 7; ++i) config.initial_q[i] = c.q_deg[i] * M_PI / 180;
+    Harness h(config);
+    h.powerOnAndSettle();
+    QCOMPARE(h.startDrag(1, 2), uint8_t(0));
+    h.controller().setExternalWrench(c.wrench);
+    const std::size_t before = planning_test::allocationCount();
+    h.idle(1500);
+    QCOMPARE(planning_test::allocationCount() - before, std::size_t(0));
+    QVERIFY2(!h.anyError(), h.errorList().c_str());
+  }
 }
 
 QTEST_APPLESS_MAIN(TestSimMotion)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // sim::Controller limits that leave a way back: while hand guiding, joint limits and the safety box
 // are walls (a spring, then the brakes) that no pull carries the arm through, without an error bit;
+// the 7-axis arm angle's rate is limited below its monitor and the wrist centre kept off the J1 axis;
 // a joint or TCP beyond a limit (placed there by the scene) may be guided or jogged back, and only
 // motion further out is refused with its bit.
 #include <QtTest/QtTest>
@@ -12,7 +13,9 @@
 
 #include "controller_harness.h"
 #include "model/robot_spec.h"
+#include "sim/drag_walls.h"
 #include "sim/error_bits.h"
+#include "sim/safety.h"
 
 using namespace xmate;
 using namespace xmate::sim;
@@ -99,6 +102,45 @@ std::array<double, 7> with(std::array<double, 7> q, size_t joint, double value) 
   return q;
 }
 
+// The strongest pull of the window: Shift+drag in the 3D view (RobotView::kPullMaxForce, N).
+constexpr double kStrongestPull = 60.0;
+// Bit 2 trips above this measured arm-angle rate (rad/s).
+const double kElbowRateMonitor = kActualVelocityFactor * model::controllerCartesianLimits().v_elbow;
+
+std::array<double, 7> degrees(const std::array<double, 7>& q_deg) {
+  std::array<double, 7> q{};
+  for (size_t i = 0; i < 7; ++i) q[i] = q_deg[i] * kDeg;
+  return q;
+}
+
+// The wrist centre's distance from the J1 axis (the base z axis), m; no tool set.
+double wristAxisRadius(const RobotState& s) {
+  const Eigen::Isometry3d flange = poseOf(s.toolTobase_pos_m);
+  return (flange.translation() - spec().dh[6].d * flange.linear().col(2)).head<2>().norm();
+}
+
+// Watches a pull: the fastest measured arm-angle rate (the rate bit 2 watches, from psi_m) and the
+// wrist centre's closest approach to the J1 axis.
+struct ArmAngleWatch {
+  explicit ArmAngleWatch(const Harness& harness)
+      : h(&harness), psi(harness.state().psi_m), closest(wristAxisRadius(harness.state())) {}
+  void operator()() {
+    fastest = std::max(fastest, std::abs(std::remainder(h->state().psi_m - psi, 2 * M_PI)) / 0.001);
+    psi = h->state().psi_m;
+    closest = std::min(closest, wristAxisRadius(h->state()));
+  }
+  const Harness* h;
+  double psi;
+  double closest;
+  double fastest = 0;
+};
+
+double farthestJoint(const std::array<double, 7>& a, const std::array<double, 7>& b) {
+  double d = 0;
+  for (size_t i = 0; i < 7; ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
 }  // namespace
 
 class TestSimWalls : public QObject {
@@ -118,6 +160,10 @@ class TestSimWalls : public QObject {
   void jointBeyondItsLimitInCartesianMotion();
   void tcpOutsideTheBoxPowersOnAndComesBack();
   void placeArmChecksItsArgument();
+  void cartesianPushTowardsTheJ1AxisIsHeldAtTheWristAxisWall();
+  void jointGuidingIsHeldAtTheWristAxisWall();
+  void pullsEverywhereKeepTheArmAngleRateBelowItsMonitor();
+  void guidingStartedCloseToTheJ1AxisStaysAndLeaves();
 };
 
 void TestSimWalls::jointWallIsASpringWithinTheMotorsStrength() {
@@ -419,6 +465,153 @@ void TestSimWalls::placeArmChecksItsArgument() {
   QVERIFY_THROWS_EXCEPTION(std::invalid_argument, h.controller().placeArm(q));
   q[1] = NAN;
   QVERIFY_THROWS_EXCEPTION(std::invalid_argument, h.controller().placeArm(q));
+}
+
+void TestSimWalls::cartesianPushTowardsTheJ1AxisIsHeldAtTheWristAxisWall() {
+  // The operator's case: Cartesian free guiding (startDrag(2, 3)) from (0, 30, 0, 60, 0, 90, 0)
+  // pushed along -x with the window's strongest pull. The wrist centre heads for the J1 axis, where
+  // the arm angle turns over by pi (bit 2 after about 1.5 s without the wall); it is held at the
+  // wrist-axis wall instead, and comes back out when pulled.
+  Harness h;
+  h.powerOnAndSettle();
+  const auto q0 = h.state().q;
+  QCOMPARE(h.startDrag(1, 2), kOk);
+  ArmAngleWatch watch(h);
+  QVERIFY2(pull(h, {-kStrongestPull, 0, 0, 0, 0, 0}, 0, 3000, std::ref(watch)), h.errorList().c_str());
+  qInfo("%.0f N along -x for 3 s: wrist centre at least %.4f m from the J1 axis (now %.4f), |psi rate| at most "
+        "%.2f rad/s (bit 2 above %.2f)",
+        kStrongestPull, watch.closest, wristAxisRadius(h.state()), watch.fastest, kElbowRateMonitor);
+  QVERIFY(watch.fastest < kElbowRateMonitor);
+  QVERIFY(watch.closest >= kWristAxisHoldRadius - 1e-3);
+  QVERIFY(watch.closest < kWristAxisHoldRadius + kWristAxisWallWidth);  // it did reach the wall
+  QCOMPARE(h.state().robot_mode, RobotMode::kGuiding);
+  // Released, the spring lets it out slowly; pulled back along +x it leaves the wall.
+  const double held = wristAxisRadius(h.state());
+  QVERIFY2(pull(h, {}, 0, 500, std::ref(watch)), h.errorList().c_str());
+  QVERIFY2(pull(h, {30, 0, 0, 0, 0, 0}, 0, 1500, std::ref(watch)), h.errorList().c_str());
+  qInfo("pulled back with 30 N for 1.5 s: the wrist centre %.4f -> %.4f m from the axis", held,
+        wristAxisRadius(h.state()));
+  QVERIFY(wristAxisRadius(h.state()) > held + 0.1);
+  QVERIFY(watch.fastest < kElbowRateMonitor);
+  // stopDrag, and a joint motion (MOVEJ) back to where guiding started.
+  h.controller().setExternalWrench({});
+  QCOMPARE(h.empty(protocol::Command::kStopDrag), kOk);
+  h.idle(300);
+  QCOMPARE(jog(h, q0), -1);
+  QVERIFY(farthestJoint(h.state().q, q0) < 1e-3);
+}
+
+void TestSimWalls::jointGuidingIsHeldAtTheWristAxisWall() {
+  // Joint-space guiding from the same pose pushed up: the wrist centre would cross the J1 axis
+  // (the arm angle turning over by pi); the wall holds it off the axis here too.
+  Harness h;
+  h.powerOnAndSettle();
+  const auto q0 = h.state().q;
+  QCOMPARE(h.startDrag(0, 2), kOk);
+  ArmAngleWatch watch(h);
+  QVERIFY2(pull(h, {0, 0, kStrongestPull, 0, 0, 0}, 0, 3000, std::ref(watch)), h.errorList().c_str());
+  qInfo("%.0f N up for 3 s: wrist centre at least %.4f m from the J1 axis, |psi rate| at most %.2f rad/s",
+        kStrongestPull, watch.closest, watch.fastest);
+  QVERIFY(watch.fastest < kElbowRateMonitor);
+  QVERIFY(watch.closest >= kWristAxisHoldRadius - 1e-3);
+  QVERIFY(watch.closest < kWristAxisHoldRadius + kWristAxisWallWidth);
+  // Released: the spring brings it out of the wall no faster than about its return speed.
+  double fastest_joint = 0;
+  QVERIFY2(pull(h, {}, 0, 1000, [&] {
+             watch();
+             for (size_t i = 0; i < 7; ++i) fastest_joint = std::max(fastest_joint, std::abs(h.state().dq_m[i]));
+           }),
+           h.errorList().c_str());
+  qInfo("released: fastest joint %.3f rad/s, wrist centre %.4f m from the axis", fastest_joint,
+        wristAxisRadius(h.state()));
+  QVERIFY(fastest_joint < 0.8);
+  QVERIFY(wristAxisRadius(h.state()) >= kWristAxisHoldRadius);
+  h.controller().setExternalWrench({});
+  QCOMPARE(h.empty(protocol::Command::kStopDrag), kOk);
+  h.idle(300);
+  QCOMPARE(jog(h, q0), -1);
+  QVERIFY(farthestJoint(h.state().q, q0) < 1e-3);
+}
+
+void TestSimWalls::pullsEverywhereKeepTheArmAngleRateBelowItsMonitor() {
+  // The window's strongest pull along 26 directions (axes, face and space diagonals), for 3 s each,
+  // in Cartesian and joint-space guiding, from four poses: the default one, two from which such a
+  // pull swings the elbow beyond its rate monitor without the limit, and one with the wrist centre
+  // 1.5 cm from the J1 axis (inside the wall). No error bit, the arm-angle rate below the monitor.
+  const std::array<std::array<double, 7>, 4> poses{{{0, 30, 0, 60, 0, 90, 0},
+                                                    {20, -20, 30, 80, -10, 60, 30},
+                                                    {-127, 20, -121, 5, -112, 51, 182},
+                                                    {129, -40, 2, 82, 22, -50, 235}}};
+  double fastest = 0;
+  int runs = 0;
+  for (int space : {1, 0}) {  // wire numbering: Cartesian (bit 2 watches it), then joint space
+    for (const auto& pose : poses) {
+      SimConfig config;
+      config.initial_q = degrees(pose);
+      QString name = space == 1 ? "Cartesian guiding from (" : "joint guiding from (";
+      for (size_t i = 0; i < 7; ++i) name += QString::number(pose[i]) + (i < 6 ? ", " : ") deg");
+      double fastest_here = 0, start_radius = 0;
+      for (int x = -1; x <= 1; ++x) {
+        for (int y = -1; y <= 1; ++y) {
+          for (int z = -1; z <= 1; ++z) {
+            if (x == 0 && y == 0 && z == 0) continue;
+            const Eigen::Vector3d f = kStrongestPull * Eigen::Vector3d(x, y, z).normalized();
+            Harness h(config);
+            h.powerOnAndSettle();
+            QCOMPARE(h.startDrag(space, 2), kOk);
+            start_radius = wristAxisRadius(h.state());
+            ArmAngleWatch watch(h);
+            const bool clean = pull(h, {f.x(), f.y(), f.z(), 0, 0, 0}, 0, 3000, std::ref(watch));
+            const QString where = QString("%1, pulled (%2, %3, %4) N: errors %5, |psi rate| up to %6 rad/s")
+                                      .arg(name)
+                                      .arg(f.x(), 0, 'f', 1)
+                                      .arg(f.y(), 0, 'f', 1)
+                                      .arg(f.z(), 0, 'f', 1)
+                                      .arg(QString::fromStdString(h.errorList()))
+                                      .arg(watch.fastest);
+            QVERIFY2(clean, qPrintable(where));
+            QVERIFY2(watch.fastest < kElbowRateMonitor, qPrintable(where));
+            QVERIFY2(watch.closest >= std::min(kWristAxisHoldRadius, start_radius) - 1e-3, qPrintable(where));
+            QVERIFY2(h.status().dragging, qPrintable(where));
+            fastest_here = std::max(fastest_here, watch.fastest);
+            ++runs;
+          }
+        }
+      }
+      qInfo("%s (wrist centre %.3f m from the J1 axis): |psi rate| at most %.2f rad/s", qPrintable(name),
+            start_radius, fastest_here);
+      fastest = std::max(fastest, fastest_here);
+    }
+  }
+  qInfo("%d pulls of %.0f N: |psi rate| at most %.2f rad/s (%.2f x v_elbow; bit 2 above %.2f)", runs, kStrongestPull,
+        fastest, fastest / model::controllerCartesianLimits().v_elbow, kElbowRateMonitor);
+}
+
+void TestSimWalls::guidingStartedCloseToTheJ1AxisStaysAndLeaves() {
+  // Guiding starts with the wrist centre 2.5 cm from the J1 axis, inside the wall: nothing moves by
+  // itself; pushed towards the axis it is held where it started, and pulled away it leaves.
+  SimConfig config;
+  config.initial_q = degrees({0, -11.4, 0, 20, 0, 60, 0});
+  Harness h(config);
+  h.powerOnAndSettle();
+  const auto q0 = h.state().q;
+  const double start_radius = wristAxisRadius(h.state());
+  QVERIFY(start_radius < kWristAxisHoldRadius);
+  QCOMPARE(h.startDrag(1, 2), kOk);
+  h.idle(1000);
+  const double moved = farthestJoint(h.state().q, q0);
+  QVERIFY2(moved < 1e-6, qPrintable(QString("moved %1 rad").arg(moved)));
+  ArmAngleWatch watch(h);
+  // The wrist centre lies behind the axis (-x): a push along +x drives it towards the axis.
+  QVERIFY2(pull(h, {kStrongestPull, 0, 0, 0, 0, 0}, 0, 3000, std::ref(watch)), h.errorList().c_str());
+  qInfo("started %.4f m from the J1 axis; pushed towards it: at least %.4f m, |psi rate| at most %.2f rad/s",
+        start_radius, watch.closest, watch.fastest);
+  QVERIFY(watch.closest >= start_radius - 1e-3);
+  QVERIFY(watch.fastest < kElbowRateMonitor);
+  QVERIFY2(pull(h, {-kStrongestPull, 0, 0, 0, 0, 0}, 0, 1500, std::ref(watch)), h.errorList().c_str());
+  qInfo("pulled away: %.4f m from the axis", wristAxisRadius(h.state()));
+  QVERIFY(wristAxisRadius(h.state()) > kWristAxisHoldRadius + kWristAxisWallWidth);
+  QVERIFY(watch.fastest < kElbowRateMonitor);
 }
 
 QTEST_APPLESS_MAIN(TestSimWalls)

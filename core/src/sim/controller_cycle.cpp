@@ -160,9 +160,11 @@ void Controller::Impl::simulateCycle() {
         joint_damping[i] = params.armature[i] >= 0.1 ? kDragJointDampingLarge : kDragJointDampingSmall;
   }
 
-  // Hand guiding: the limits are walls (drag_walls.h); the TCP is linearised over the cycle for them.
+  // Hand guiding: the limits are walls (drag_walls.h); the TCP, the wrist centre and the arm angle
+  // are linearised over the cycle for them.
   const bool dragging = motors_on && activity == Activity::kDrag;
   const TcpLinearization tcp = dragging ? tcpLinearization() : TcpLinearization{};
+  const ArmAngleLinearization arm_angle = dragging ? armAngleLinearization() : ArmAngleLinearization{};
 
   const JointVector dq_before = plant.dq;
   JointVector motor_sum = JointVector::Zero();
@@ -173,12 +175,12 @@ void Controller::Impl::simulateCycle() {
       continue;
     }
     JointVector demand = servoTorque(double(s - 1) / kSubsteps, cartesian, gravity, joint_damping);
-    if (dragging) demand += dragWallTorque(tcp);
+    if (dragging) demand += dragWallTorque(tcp, arm_angle);
     const JointVector tau = saturateTorque(params, demand);
     motor_sum += tau;
     drive_sum += tau - frictionTorque(params, plant.dq);
     advancePowered(plant, *physical, params, tau, scene_torque, kSubstep);
-    if (dragging) holdAtDragWalls(tcp, *physical);  // the brakes hold what the motors cannot
+    if (dragging) holdAtDragWalls(tcp, arm_angle, *physical);  // the brakes hold what the motors cannot
   }
   measure(dq_before, motor_sum, drive_sum, scene_torque, physical->bias);
 }

@@ -186,8 +186,12 @@ struct Controller::Impl {
   void ratchetAllowances();       // every cycle, after the physics
   void widenIkLimitsToAllowance();  // the IK may return solutions as far out as the allowance
   TcpLinearization tcpLinearization() const;
-  JointVector dragWallTorque(const TcpLinearization& tcp) const;  // walls and the guiding speed limit
-  void holdAtDragWalls(const TcpLinearization& tcp, const FrozenDynamics& physical);
+  ArmAngleLinearization armAngleLinearization() const;  // 7-axis: psi and the wrist centre over the cycle
+  double wristAxisRadius() const;  // the wrist centre's distance from the J1 axis, m (7-axis)
+  // Walls and the guiding speed limits (joints, TCP, arm angle).
+  JointVector dragWallTorque(const TcpLinearization& tcp, const ArmAngleLinearization& arm_angle) const;
+  void holdAtDragWalls(const TcpLinearization& tcp, const ArmAngleLinearization& arm_angle,
+                       const FrozenDynamics& physical);
 
   // ---- controller_cycle.cpp
   void step(const RobotCommand* command);
@@ -228,6 +232,7 @@ struct Controller::Impl {
   JointAllowance joint_allowance;  // the joint limits enforced: soft limits, or wider where the arm is beyond them
   BoxAllowance box_allowance;      // the same for the faces of the safety box
   WallOnsets wall_onsets;          // where the springs of the drag walls begin
+  WristAxisStop wrist_stop;        // 7-axis: how close to the J1 axis guiding may bring the wrist centre
   FrozenDynamics model_dynamics;
   FrozenDynamics plant_dynamics;
 

@@ -45,6 +45,19 @@ void holdAtFace(PlantState& state, const FrozenDynamics& dynamics, const TcpLine
   stopAlong(state, dynamics, g, beyond);
 }
 
+// The wrist centre at or within the wrist-axis stop's hold radius: held there (g = its rate of
+// approach to the J1 axis). Nothing to hold along on the axis itself (no direction).
+void holdOffWristAxis(PlantState& state, const FrozenDynamics& dynamics, const WristAxisStop& stop,
+                      const ArmAngleLinearization& arm_angle) {
+  if (!stop.active || !arm_angle.defined) return;
+  const Eigen::Vector2d w = arm_angle.wristAt(state.q);
+  const double r = w.norm();
+  const double beyond = stop.hold - r;
+  if (beyond < 0 || r < 1e-9) return;
+  const JointVector g = -(arm_angle.jw.transpose() * (w / r));  // -d r / dq
+  stopAlong(state, dynamics, g, beyond);
+}
+
 // Joint i at or beyond its allowed limit: held by its brake (the impulse acts on the whole arm).
 void holdJoint(PlantState& state, const FrozenDynamics& dynamics, const JointAllowance& joints, int i) {
   const double above = state.q[i] - joints.upper[i], below = joints.lower[i] - state.q[i];
@@ -71,6 +84,19 @@ void WallOnsets::ratchet(const JointVector& q, const JointAllowance& joints, con
     followOut(q[i], joints.lower[i], joints.upper[i], kJointWallWidth, joint_lower[i], joint_upper[i]);
   for (int a = 0; a < 3; ++a)
     followOut(box_local[a], box.lower[a], box.upper[a], kBoxWallWidth, box_lower[a], box_upper[a]);
+}
+
+void WristAxisStop::reset(bool seven_axis, double radius) {
+  active = seven_axis;
+  hold = std::min(kWristAxisHoldRadius, radius);
+  spring = -INFINITY;
+  ratchet(radius);
+}
+
+void WristAxisStop::ratchet(double radius) {
+  if (!active) return;
+  hold = std::max(hold, std::min(kWristAxisHoldRadius, radius));
+  spring = std::min(hold + kWristAxisWallWidth, std::max(spring, radius));
 }
 
 JointVector jointWallTorque(const WallOnsets& onsets, const PlantParams& params, const PlantState& measured) {
@@ -104,6 +130,36 @@ JointVector guidingSpeedTorque(const PlantParams& params, const JointVector& vel
   return tau;
 }
 
+JointVector armAngleSpeedTorque(const PlantParams& params, double elbow_velocity_limit,
+                                const ArmAngleLinearization& arm_angle, const PlantState& measured) {
+  JointVector tau = JointVector::Zero();
+  if (!arm_angle.defined || arm_angle.wristAt(measured.q).norm() < kArmAngleDefinedRadius) return tau;
+  const double rate = arm_angle.jpsi.dot(measured.dq);
+  const double excess = std::abs(rate) - kGuidingSpeedOnset * elbow_velocity_limit;
+  if (excess <= 0) return tau;
+  double strain = 0;  // the largest |jpsi_i| / peak_i: its joint reaches its peak torque first
+  for (int i = 0; i < params.dof; ++i) strain = std::max(strain, std::abs(arm_angle.jpsi[i]) / params.peak_torque[i]);
+  if (strain <= 0) return tau;
+  const double span = (kGuidingSpeedFull - kGuidingSpeedOnset) * elbow_velocity_limit;
+  const double share = std::min(1.0, excess / span);
+  return -std::copysign(share / strain, rate) * arm_angle.jpsi;
+}
+
+JointVector wristAxisWallTorque(const WristAxisStop& stop, const ArmAngleLinearization& arm_angle,
+                                const PlantState& measured) {
+  constexpr double kStiffness = kWristAxisWallForce / kWristAxisWallWidth;      // N/m
+  constexpr double kDamping = kWristAxisWallForce / kWristAxisWallReturnSpeed;  // N s/m at full depth
+  JointVector tau = JointVector::Zero();
+  if (!stop.active || !arm_angle.defined) return tau;
+  const Eigen::Vector2d w = arm_angle.wristAt(measured.q);
+  const double r = w.norm();
+  if (r < 1e-9) return tau;  // on the axis: no direction to push along
+  const JointVector g = arm_angle.jw.transpose() * (w / r);  // d r / dq
+  // The wall's limit lies towards the axis: depth and velocity measured that way.
+  const double force = -wallForce(stop.spring - r, -g.dot(measured.dq), kStiffness, kDamping, kWristAxisWallWidth);
+  return g * force;
+}
+
 JointVector boxWallTorque(const WallOnsets& onsets, const SafetyBox& box, const TcpLinearization& tcp,
                           const PlantState& measured) {
   constexpr double kStiffness = kBoxWallForce / kBoxWallWidth;      // N/m
@@ -120,7 +176,8 @@ JointVector boxWallTorque(const WallOnsets& onsets, const SafetyBox& box, const 
 }
 
 void holdAtWalls(PlantState& state, const FrozenDynamics& dynamics, const JointAllowance& joints, bool box_active,
-                 const SafetyBox& box, const BoxAllowance& box_allowance, const TcpLinearization& tcp, int dof) {
+                 const SafetyBox& box, const BoxAllowance& box_allowance, const TcpLinearization& tcp,
+                 const WristAxisStop& wrist_stop, const ArmAngleLinearization& arm_angle, int dof) {
   const Eigen::Matrix3d r = box.frame.linear();
   const Eigen::Vector3d centre = box.frame.translation();
   constexpr int kPasses = 2;  // several stops at once: a second pass undoes what one did to another
@@ -131,6 +188,7 @@ void holdAtWalls(PlantState& state, const FrozenDynamics& dynamics, const JointA
       holdAtFace(state, dynamics, tcp, n, c + box_allowance.upper[a] - kBoxHoldInset);
       holdAtFace(state, dynamics, tcp, -n, -(c + box_allowance.lower[a] + kBoxHoldInset));
     }
+    holdOffWristAxis(state, dynamics, wrist_stop, arm_angle);
     for (int i = 0; i < dof; ++i) holdJoint(state, dynamics, joints, i);
   }
   for (int i = 0; i < dof; ++i) {  // the brakes, last: a joint never passes its allowed limit
