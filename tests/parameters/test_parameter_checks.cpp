@@ -53,6 +53,31 @@ class TestParameterChecks : public QObject {
     QVERIFY(says(checkFilters(50, std::nan(""), 50), "cartesian_hz is not a finite"));
   }
 
+  // Editors mark the refused field from the problem's fields, not by reading its sentence.
+  void problemsNameTheirParameter() {
+    QCOMPARE(checkFilters(50, 50, 2000).parameter, std::string("torque_hz"));
+    QCOMPARE(checkFilters(50, 50, 2000).index, -1);
+    const auto& pro = robotSpec(XMATE7_PRO);
+    auto t = pro.collision_threshold_max;
+    t[4] = 1000;
+    const ParameterProblem thresholds = checkCollisionThresholds(pro, t);
+    QCOMPARE(thresholds.parameter, std::string("upper_torque_thresholds_nominal"));
+    QCOMPARE(thresholds.index, 4);
+    const std::array<double, 9> asymmetric{0.01, 0.002, 0, 0, 0.01, 0, 0, 0, 0.01};
+    QCOMPARE(checkLoad(pro, 1.0, {0, 0, 0.6}, asymmetric).parameter, std::string("center"));
+    QCOMPARE(checkLoad(pro, 1.0, {0, 0, 0.6}, asymmetric).index, 2);
+    QCOMPARE(checkLoad(pro, 1.0, {0, 0, 0.1}, asymmetric).parameter, std::string("inertia"));
+    std::array<double, 7> upper{}, lower{};
+    for (int i = 0; i < 7; ++i) upper[i] = 10, lower[i] = -10;
+    lower[3] = 20;
+    const ParameterProblem soft = checkSoftLimits(pro, upper, lower);
+    QCOMPARE(soft.parameter, std::string("lower"));
+    QCOMPARE(soft.index, 3);
+    QCOMPARE(checkCartesianLimit({0.5, 0, 0.5}, kIdentity).parameter, std::string("size"));
+    QCOMPARE(checkCartesianLimit({0.5, 0, 0.5}, kIdentity).index, 1);
+    QCOMPARE(checkDrag(3, 1).parameter, std::string("drag_space"));
+  }
+
   void load() {
     const auto& p3 = robotSpec(XMATE3_PRO);
     const std::array<double, 9> I{0.01, 0, 0, 0, 0.01, 0, 0, 0, 0.01};

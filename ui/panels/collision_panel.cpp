@@ -90,9 +90,9 @@ std::array<double, 7> CollisionPanel::thresholds() const {
 void CollisionPanel::apply() {
   clearInvalid(fields_);
   const auto t = thresholds();
-  const std::string error = xmate::model::checkCollisionThresholds(spec(), t);
+  const xmate::model::ParameterProblem error = xmate::model::checkCollisionThresholds(spec(), t);
   if (!error.empty()) {
-    const int i = indexInMessage(error, "upper_torque_thresholds_nominal");
+    const int i = error.index;
     if (i >= 0 && i < fields_.size()) markInvalid(fields_[i], true);
     message_->showError(tr("Not sent: %1. Enter a value within the range shown in the field's tooltip.")
                             .arg(text::valueRefusal(error)));

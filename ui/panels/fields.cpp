@@ -5,7 +5,6 @@
 #include <QAbstractButton>
 #include <QComboBox>
 
-#include <cctype>
 
 namespace rci::ui {
 
@@ -44,18 +43,6 @@ void markInvalid(QWidget* field, bool invalid) {
 
 void clearInvalid(const QList<QDoubleSpinBox*>& fields) {
   for (auto* f : fields) markInvalid(f, false);
-}
-
-int indexInMessage(const std::string& message, const std::string& parameter) {
-  const std::string key = parameter + "[";
-  const size_t at = message.find(key);
-  if (at == std::string::npos) return -1;
-  size_t i = at + key.size();
-  if (i >= message.size() || !std::isdigit(static_cast<unsigned char>(message[i]))) return -1;
-  int value = 0;
-  while (i < message.size() && std::isdigit(static_cast<unsigned char>(message[i])))
-    value = value * 10 + (message[i++] - '0');
-  return value;
 }
 
 MessageLine::MessageLine(const QString& name, QWidget* parent) : QLabel(parent) {

@@ -30,9 +30,6 @@ void compactCombo(QComboBox* combo, int min_chars);
 void markInvalid(QWidget* field, bool invalid);
 void clearInvalid(const QList<QDoubleSpinBox*>& fields);
 
-// The index i in "parameter[i]" inside a check message (parameter_checks.h), or -1.
-int indexInMessage(const std::string& message, const std::string& parameter);
-
 // The line under an editor: empty, an error (why a value was refused) or a warning (sent anyway).
 class MessageLine : public QLabel {
   Q_OBJECT

@@ -77,11 +77,11 @@ QString FiltersPanel::recommendationWarning() const {
 void FiltersPanel::apply() {
   clearInvalid(fields_);
   const double joint = fields_[0]->value(), cart = fields_[1]->value(), torque = fields_[2]->value();
-  const std::string error = mc::checkFilters(joint, cart, torque);
+  const mc::ParameterProblem error = mc::checkFilters(joint, cart, torque);
   if (!error.empty()) {
     const char* params[3] = {"joint_hz", "cartesian_hz", "torque_hz"};
     for (int i = 0; i < 3; ++i)
-      if (error.find(std::string("setFilters: ") + params[i]) != std::string::npos) markInvalid(fields_[i], true);
+      if (error.parameter == params[i]) markInvalid(fields_[i], true);
     message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }

@@ -98,14 +98,14 @@ void ImpedancePanel::showModel() {
 
 void ImpedancePanel::sessionOpened() { showModel(); }
 
-bool ImpedancePanel::accept(Editor& editor, const std::string& error, const char* parameter) {
+bool ImpedancePanel::accept(Editor& editor, const xmate::model::ParameterProblem& error) {
   clearInvalid(editor.fields);
   if (error.empty()) {
     editor.message->clearMessage();
     saveFields(editor.fields);
     return true;
   }
-  const int i = indexInMessage(error, parameter);
+  const int i = error.index;
   if (i >= 0 && i < editor.fields.size()) markInvalid(editor.fields[i], true);
   editor.message->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
   return false;
@@ -114,21 +114,21 @@ bool ImpedancePanel::accept(Editor& editor, const std::string& error, const char
 void ImpedancePanel::applyJoint() {
   std::array<double, 7> k{};
   for (int i = 0; i < dof(); ++i) k[i] = joint_.fields[i]->value();
-  if (!accept(joint_, mc::checkJointImpedance(spec(), k), "K_theta")) return;
+  if (!accept(joint_, mc::checkJointImpedance(spec(), k))) return;
   send(tr("apply joint stiffness"), [k](xmate::Robot& r) { r.setJointImpedance(k); });
 }
 
 void ImpedancePanel::applyCartesian() {
   std::array<double, 6> k{};
   for (int i = 0; i < 6; ++i) k[i] = cartesian_.fields[i]->value();
-  if (!accept(cartesian_, mc::checkCartesianImpedance(k), "K_x")) return;
+  if (!accept(cartesian_, mc::checkCartesianImpedance(k))) return;
   send(tr("apply Cartesian stiffness"), [k](xmate::Robot& r) { r.setCartesianImpedance(k); });
 }
 
 void ImpedancePanel::applyWrench() {
   std::array<double, 6> w{};
   for (int i = 0; i < 6; ++i) w[i] = wrench_.fields[i]->value();
-  if (!accept(wrench_, mc::checkDesiredWrench(w), "tau")) return;
+  if (!accept(wrench_, mc::checkDesiredWrench(w))) return;
   send(tr("apply desired wrench"), [w](xmate::Robot& r) { r.setCartImpDesiredTau(w); });
 }
 

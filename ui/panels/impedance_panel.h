@@ -9,6 +9,7 @@
 #include <array>
 #include <string>
 
+#include "model/parameter_checks.h"
 #include "panels/panel_base.h"
 
 class QDoubleSpinBox;
@@ -37,7 +38,8 @@ class ImpedancePanel : public PanelBase {
   QGroupBox* makeEditor(Editor& editor, const QString& title, const QString& prefix, const QStringList& labels,
                         double min, double max, const QStringList& units, const QString& apply_tip);
   // Shows the check result on the editor; true when the values may be sent.
-  bool accept(Editor& editor, const std::string& error, const char* parameter);
+  // Marks the refused field and says why (false), or clears the marks and saves the fields (true).
+  bool accept(Editor& editor, const xmate::model::ParameterProblem& error);
   void showModel();
   void applyJoint();
   void applyCartesian();

@@ -95,9 +95,9 @@ void SafetyBoxPanel::apply() {
     box.size[i] = size_[i]->value();
     box.frame[4 * i + 3] = centre_[i]->value();
   }
-  const std::string error = xmate::model::checkCartesianLimit(box.size, box.frame);
+  const xmate::model::ParameterProblem error = xmate::model::checkCartesianLimit(box.size, box.frame);
   if (!error.empty()) {
-    const int i = indexInMessage(error, "size");
+    const int i = error.parameter == "size" ? error.index : -1;
     if (i >= 0 && i < 3) markInvalid(size_[i], true);
     message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;

@@ -117,12 +117,12 @@ void SoftLimitsPanel::apply() {
     upper[i] = enabled ? upper_[i]->value() : s.q_max[i] * kDegPerRad;
     lower[i] = enabled ? lower_[i]->value() : s.q_min[i] * kDegPerRad;
   }
-  const std::string error = xmate::model::checkSoftLimits(s, upper, lower);
+  const xmate::model::ParameterProblem error = xmate::model::checkSoftLimits(s, upper, lower);
   if (!error.empty()) {
-    const int up = indexInMessage(error, "upper");
-    const int low = indexInMessage(error, "lower");
-    if (up >= 0 && up < 7) markInvalid(upper_[up], true);
-    if (low >= 0 && low < 7) markInvalid(lower_[low], true);
+    if (error.index >= 0 && error.index < 7) {
+      markInvalid(error.parameter == "upper" ? upper_[error.index] : lower_[error.index], true);
+      if (error.text.find("must be below") != std::string::npos) markInvalid(upper_[error.index], true);
+    }
     message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;
   }

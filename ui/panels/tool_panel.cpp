@@ -131,7 +131,7 @@ void ToolPanel::applyTool() {
   std::array<double, 6> v{};
   for (int i = 0; i < 6; ++i) v[i] = tool_[i]->value();
   const auto frame = toolFrameFromXyzRpy(v);
-  const std::string error = mc::checkToolFrame(frame);
+  const mc::ParameterProblem error = mc::checkToolFrame(frame);
   if (!error.empty()) {
     for (int i = 0; i < 3; ++i) markInvalid(tool_[i], true);
     tool_message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
@@ -149,12 +149,11 @@ void ToolPanel::applyPayload() {
   const double ixx = inertia_[0]->value(), iyy = inertia_[1]->value(), izz = inertia_[2]->value();
   const double ixy = inertia_[3]->value(), ixz = inertia_[4]->value(), iyz = inertia_[5]->value();
   const std::array<double, 9> inertia{ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz};
-  const std::string error = mc::checkLoad(spec(), mass, centre, inertia);
+  const mc::ParameterProblem error = mc::checkLoad(spec(), mass, centre, inertia);
   if (!error.empty()) {
-    if (error.find("setLoad: mass") != std::string::npos) markInvalid(mass_, true);
-    const int c = indexInMessage(error, "center");
-    if (c >= 0 && c < 3) markInvalid(centre_[c], true);
-    if (error.find("inertia") != std::string::npos)
+    if (error.parameter == "mass") markInvalid(mass_, true);
+    if (error.parameter == "center" && error.index >= 0 && error.index < 3) markInvalid(centre_[error.index], true);
+    if (error.parameter == "inertia")
       for (auto* f : inertia_) markInvalid(f, true);
     payload_message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;

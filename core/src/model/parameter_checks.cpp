@@ -18,38 +18,47 @@ std::string fmt(double v) {
   return buf;
 }
 
-// "call: parameter[i] = v is outside [lo, hi] unit"
-std::string outside(const char* call, const char* parameter, int index, double value, const std::string& range,
-                    const char* unit) {
+// A problem with `parameter` (element `index`, -1 for none): "call: <text>".
+ParameterProblem problem(const char* parameter, int index, std::string text) {
+  return {std::move(text), parameter, index};
+}
+
+// "call: parameter[i]"
+std::string named(const char* call, const char* parameter, int index) {
   std::string s = std::string(call) + ": " + parameter;
   if (index >= 0) s += "[" + std::to_string(index) + "]";
-  s += " = " + fmt(value) + " is outside " + range + (unit[0] ? std::string(" ") + unit : std::string());
   return s;
 }
 
-std::string notFinite(const char* call, const char* parameter, int index) {
-  std::string s = std::string(call) + ": " + parameter;
-  if (index >= 0) s += "[" + std::to_string(index) + "]";
-  return s + " is not a finite number";
+// "call: parameter[i] = v is outside [lo, hi] unit"
+ParameterProblem outside(const char* call, const char* parameter, int index, double value, const std::string& range,
+                         const char* unit) {
+  return problem(parameter, index,
+                 named(call, parameter, index) + " = " + fmt(value) + " is outside " + range +
+                     (unit[0] ? std::string(" ") + unit : std::string()));
+}
+
+ParameterProblem notFinite(const char* call, const char* parameter, int index) {
+  return problem(parameter, index, named(call, parameter, index) + " is not a finite number");
 }
 
 template <size_t N>
-std::string checkFiniteArray(const char* call, const char* parameter, const std::array<double, N>& a) {
+ParameterProblem checkFiniteArray(const char* call, const char* parameter, const std::array<double, N>& a) {
   for (size_t i = 0; i < N; ++i)
     if (!std::isfinite(a[i])) return notFinite(call, parameter, int(i));
   return {};
 }
 
 // Per-joint upper bounds; entries at index >= dof must be exactly 0.
-std::string checkPerJoint(const char* call, const char* parameter, const RobotSpec& spec,
+ParameterProblem checkPerJoint(const char* call, const char* parameter, const RobotSpec& spec,
                           const std::array<double, 7>& values, const std::array<double, 7>& max,
                           bool allow_zero, const char* unit) {
   if (auto e = checkFiniteArray(call, parameter, values); !e.empty()) return e;
   for (int i = 0; i < 7; ++i) {
     if (i >= spec.dof) {
       if (values[i] != 0)
-        return std::string(call) + ": " + parameter + "[" + std::to_string(i) + "] must be 0 on the 6-axis " +
-               std::string(spec.display_name);
+        return problem(parameter, i, named(call, parameter, i) + " must be 0 on the 6-axis " +
+                                         std::string(spec.display_name));
       continue;
     }
     const bool low = allow_zero ? values[i] < 0 : values[i] <= 0;
@@ -65,31 +74,32 @@ double ratedPayloadKg(const RobotSpec& spec) {
   return spec.rated_payload_kg;
 }
 
-std::string checkHomogeneous(const char* call, const char* parameter, const std::array<double, 16>& m) {
+ParameterProblem checkHomogeneous(const char* call, const char* parameter, const std::array<double, 16>& m) {
   if (auto e = checkFiniteArray(call, parameter, m); !e.empty()) return e;
   if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1)
-    return std::string(call) + ": " + parameter +
-           " is not a homogeneous transform: its last row must be 0 0 0 1 (row-major 4x4)";
+    return problem(parameter, -1, named(call, parameter, -1) +
+                                      " is not a homogeneous transform: its last row must be 0 0 0 1 (row-major 4x4)");
   Eigen::Matrix3d r;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r(i, j) = m[4 * i + j];
   const double orth = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (orth > kHomogeneousTolerance || std::abs(r.determinant() - 1.0) > kHomogeneousTolerance)
-    return std::string(call) + ": " + parameter + " has a rotation part that is not orthonormal (error " +
-           fmt(orth) + ", allowed " + fmt(kHomogeneousTolerance) + "); re-orthonormalise it";
+    return problem(parameter, -1,
+                   named(call, parameter, -1) + " has a rotation part that is not orthonormal (error " + fmt(orth) +
+                       ", allowed " + fmt(kHomogeneousTolerance) + "); re-orthonormalise it");
   return {};
 }
 
-std::string checkCollisionThresholds(const RobotSpec& spec, const std::array<double, 7>& t) {
+ParameterProblem checkCollisionThresholds(const RobotSpec& spec, const std::array<double, 7>& t) {
   return checkPerJoint("setCollisionBehavior", "upper_torque_thresholds_nominal", spec, t,
                        spec.collision_threshold_max, false, "Nm");
 }
 
-std::string checkJointImpedance(const RobotSpec& spec, const std::array<double, 7>& k) {
+ParameterProblem checkJointImpedance(const RobotSpec& spec, const std::array<double, 7>& k) {
   return checkPerJoint("setJointImpedance", "K_theta", spec, k, spec.joint_stiffness_max, true, "Nm/rad");
 }
 
-std::string checkCartesianImpedance(const std::array<double, 6>& k) {
+ParameterProblem checkCartesianImpedance(const std::array<double, 6>& k) {
   if (auto e = checkFiniteArray("setCartesianImpedance", "K_x", k); !e.empty()) return e;
   for (int i = 0; i < 6; ++i)
     if (k[i] < 0 || k[i] > kCartesianStiffnessMax[i])
@@ -98,7 +108,7 @@ std::string checkCartesianImpedance(const std::array<double, 6>& k) {
   return {};
 }
 
-std::string checkFilters(double joint_hz, double cartesian_hz, double torque_hz) {
+ParameterProblem checkFilters(double joint_hz, double cartesian_hz, double torque_hz) {
   const char* names[3] = {"joint_hz", "cartesian_hz", "torque_hz"};
   const double v[3] = {joint_hz, cartesian_hz, torque_hz};
   for (int i = 0; i < 3; ++i) {
@@ -110,7 +120,7 @@ std::string checkFilters(double joint_hz, double cartesian_hz, double torque_hz)
   return {};
 }
 
-std::string checkLoad(const RobotSpec& spec, double mass, const std::array<double, 3>& center,
+ParameterProblem checkLoad(const RobotSpec& spec, double mass, const std::array<double, 3>& center,
                       const std::array<double, 9>& inertia) {
   if (!std::isfinite(mass)) return notFinite("setLoad", "mass", -1);
   if (mass < 0 || mass > ratedPayloadKg(spec))
@@ -125,7 +135,7 @@ std::string checkLoad(const RobotSpec& spec, double mass, const std::array<doubl
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) I(i, j) = inertia[3 * i + j];
   if (!isSymmetricInertia(I))
-    return "setLoad: inertia must be symmetric (row-major 3x3 about the centre of mass, kg m^2)";
+    return problem("inertia", -1, "setLoad: inertia must be symmetric (row-major 3x3 about the centre of mass, kg m^2)");
   for (int i = 0; i < 3; ++i)
     if (I(i, i) > kLoadInertiaMaxKgM2)
       return outside("setLoad", "inertia", 4 * i, I(i, i), "[0, " + fmt(kLoadInertiaMaxKgM2) + "]",
@@ -133,22 +143,25 @@ std::string checkLoad(const RobotSpec& spec, double mass, const std::array<doubl
   const double scale = std::max(1e-9, I.cwiseAbs().maxCoeff());
   const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
   if (ev.minCoeff() < -1e-12)
-    return "setLoad: inertia must be positive semi-definite (smallest eigenvalue " + fmt(ev.minCoeff()) + ")";
+    return problem("inertia", -1,
+                   "setLoad: inertia must be positive semi-definite (smallest eigenvalue " + fmt(ev.minCoeff()) + ")");
   const double a = I(0, 0), b = I(1, 1), c = I(2, 2), tol = 1e-9 * scale;
   if (a + b < c - tol || b + c < a - tol || a + c < b - tol)
-    return "setLoad: inertia diagonal violates the triangle inequality (Ixx + Iyy >= Izz, ...): no real body has it";
+    return problem("inertia", -1,
+                   "setLoad: inertia diagonal violates the triangle inequality (Ixx + Iyy >= Izz, ...): no real body has it");
   return {};
 }
 
-std::string checkToolFrame(const std::array<double, 16>& f) {
+ParameterProblem checkToolFrame(const std::array<double, 16>& f) {
   if (auto e = checkHomogeneous("setCoor", "F_T_EE", f); !e.empty()) return e;
   const double d = std::sqrt(f[3] * f[3] + f[7] * f[7] + f[11] * f[11]);
   if (d > kToolOffsetMaxM)
-    return "setCoor: the TCP is " + fmt(d) + " m from the flange; at most " + fmt(kToolOffsetMaxM) + " m is accepted";
+    return problem("F_T_EE", -1,
+                   "setCoor: the TCP is " + fmt(d) + " m from the flange; at most " + fmt(kToolOffsetMaxM) + " m is accepted");
   return {};
 }
 
-std::string checkCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame) {
+ParameterProblem checkCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame) {
   if (auto e = checkFiniteArray("setCartesianLimit", "size", size); !e.empty()) return e;
   for (int i = 0; i < 3; ++i)
     if (size[i] <= 0 || size[i] > kSafetyBoxMaxSizeM)
@@ -156,7 +169,7 @@ std::string checkCartesianLimit(const std::array<double, 3>& size, const std::ar
   return checkHomogeneous("setCartesianLimit", "frame", frame);
 }
 
-std::string checkSoftLimits(const RobotSpec& spec, const std::array<double, 7>& upper_deg,
+ParameterProblem checkSoftLimits(const RobotSpec& spec, const std::array<double, 7>& upper_deg,
                             const std::array<double, 7>& lower_deg) {
   if (auto e = checkFiniteArray("setJointLimit", "upper", upper_deg); !e.empty()) return e;
   if (auto e = checkFiniteArray("setJointLimit", "lower", lower_deg); !e.empty()) return e;
@@ -169,13 +182,14 @@ std::string checkSoftLimits(const RobotSpec& spec, const std::array<double, 7>& 
     if (lower_deg[i] > hi + 1e-9 || lower_deg[i] < lo - 1e-9)
       return outside("setJointLimit", "lower", i, lower_deg[i], range, "deg (the hardware range)");
     if (!(lower_deg[i] < upper_deg[i]))
-      return "setJointLimit: lower[" + std::to_string(i) + "] = " + fmt(lower_deg[i]) + " must be below upper[" +
-             std::to_string(i) + "] = " + fmt(upper_deg[i]);
+      return problem("lower", i,
+                     "setJointLimit: lower[" + std::to_string(i) + "] = " + fmt(lower_deg[i]) + " must be below upper[" +
+                         std::to_string(i) + "] = " + fmt(upper_deg[i]));
   }
   return {};
 }
 
-std::string checkDesiredWrench(const std::array<double, 6>& w) {
+ParameterProblem checkDesiredWrench(const std::array<double, 6>& w) {
   if (auto e = checkFiniteArray("setCartImpDesiredTau", "tau", w); !e.empty()) return e;
   for (int i = 0; i < 6; ++i) {
     const double max = i < 3 ? kDesiredForceMaxN : kDesiredTorqueMaxNm;
@@ -185,27 +199,32 @@ std::string checkDesiredWrench(const std::array<double, 6>& w) {
   return {};
 }
 
-std::string checkForceFrame(const std::array<double, 16>& frame, int fc_type) {
+ParameterProblem checkForceFrame(const std::array<double, 16>& frame, int fc_type) {
   if (fc_type < 1 || fc_type > 3)
-    return "setFcCoor: fc_type = " + std::to_string(fc_type) + " must be 1 (world), 2 (tool) or 3 (path)";
+    return problem("fc_type", -1,
+                   "setFcCoor: fc_type = " + std::to_string(fc_type) + " must be 1 (world), 2 (tool) or 3 (path)");
   return checkHomogeneous("setFcCoor", "fc_coor", frame);
 }
 
-std::string checkDrag(int drag_space, int drag_type) {
+ParameterProblem checkDrag(int drag_space, int drag_type) {
   if (drag_space < 1 || drag_space > 2)
-    return "startDrag: drag_space = " + std::to_string(drag_space) + " must be 1 (joint space) or 2 (Cartesian space)";
+    return problem("drag_space", -1,
+                   "startDrag: drag_space = " + std::to_string(drag_space) + " must be 1 (joint space) or 2 (Cartesian space)");
   if (drag_type < 1 || drag_type > 3)
-    return "startDrag: drag_type = " + std::to_string(drag_type) +
-           " must be 1 (translation only), 2 (rotation only) or 3 (free)";
+    return problem("drag_type", -1,
+                   "startDrag: drag_type = " + std::to_string(drag_type) +
+                       " must be 1 (translation only), 2 (rotation only) or 3 (free)");
   if (drag_space == 1 && drag_type != 3)
-    return "startDrag: joint-space drag (drag_space = 1) is always free: use drag_type = 3, or drag_space = 2 "
-           "to restrict to translation or rotation";
+    return problem("drag_type", -1,
+                   "startDrag: joint-space drag (drag_space = 1) is always free: use drag_type = 3, or drag_space = 2 "
+                   "to restrict to translation or rotation");
   return {};
 }
 
-std::string checkMotorPower(int state) {
+ParameterProblem checkMotorPower(int state) {
   if (state != 0 && state != 1)
-    return "setMotorPower: state = " + std::to_string(state) + " must be 1 (power on) or 0 (power off)";
+    return problem("state", -1,
+                   "setMotorPower: state = " + std::to_string(state) + " must be 1 (power on) or 0 (power off)");
   return {};
 }
 
