@@ -77,19 +77,17 @@ int main(int argc, char* argv[]) {
     bool init = true;
     double init_psi = 0;
     double time = 0;
-    uint64_t first_id = 0;
     constexpr double kPeriod = 10.0;  // s: the arc angle returns to 0 after one period of cos(pi/5 t)
 
     CartesianControl cartesian_position_callback = [&](RCI::robot::RobotState robot_state) -> CartesianPose {
       if (init) {
         init_position = robot_state.toolTobase_pos_m;
-        first_id = robot_state.message_id;
         init_psi = robot_state.psi_m;
         init = false;
       }
-      // The controller's clock: one message_id per 1 ms cycle. Counting callbacks instead would
-      // fall behind after a lost state and make the next command a double step.
-      time = double(robot_state.message_id - first_id + 1) * 0.001;
+      // One call per 1 ms cycle, as in the vendor manual: Control() calls the callback also for
+      // states lost on the way (their output unused), so this clock stays on the controller's.
+      time += 0.001;
       constexpr double kRadius = 0.2;
       const double angle = M_PI / 4 * (1 - std::cos(M_PI / 5 * time));
       const double delta_x = kRadius * std::sin(angle);

@@ -47,17 +47,15 @@ int main(int argc, char* argv[]) {
     JointPositions output{};
     bool init = true;
     double time = 0;
-    uint64_t first_id = 0;
 
     JointControl joint_position_callback = [&](RCI::robot::RobotState robot_state) -> JointPositions {
       if (init) {
         init_position = robot_state.q;
-        first_id = robot_state.message_id;
         init = false;
       }
-      // The controller's clock: one message_id per 1 ms cycle. Counting callbacks instead would
-      // fall behind after a lost state and make the next command a double step.
-      time = double(robot_state.message_id - first_id + 1) * 0.001;
+      // One call per 1 ms cycle, as in the vendor manual: Control() calls the callback also for
+      // states lost on the way (their output unused), so this clock stays on the controller's.
+      time += 0.001;
       joint_s.calculateSynchronizedValues_joint(init_position);
       const bool finished = joint_s.calculateDesiredValues_joint(time, joint_delta);
       for (unsigned int i = 0; i < 6; i++) output.q[i] = init_position[i] + joint_delta[i];

@@ -219,7 +219,24 @@ void TestOperatorText::refusalsTranslate_data() {
   QTest::newRow("e-stop") << "startMove: the controller refused: aborted by an emergency stop; release the emergency "
                              "stop, then automaticErrorRecovery()"
                           << "emergency stop is pressed";
-  QTest::newRow("stopping") << "startMove: the robot is still stopping; try again shortly" << "still stopping";
+  QTest::newRow("stopping") << "startMove: the robot is still stopping; try again shortly" << "coming to rest";
+  QTest::newRow("client: stopping") << "startMove: the arm is still stopping (joint 2 at 0.12 rad/s); wait until it "
+                                       "stands still, then try again"
+                                    << "no longer says";
+  QTest::newRow("client: guiding") << "startMove: the controller refused: not possible in the robot's current state; "
+                                      "hand guiding is on: call stopDrag() first"
+                                   << "Press Stop guiding in the Drag panel";
+  QTest::newRow("client: no reason") << "startMove: the controller refused: not possible in the robot's current "
+                                        "state; the controller gave no reason the client can see (robot mode kIdle, "
+                                        "no error bits, no safety stop, motors on, the arm at rest)"
+                                     << "refused without a reason";
+  QTest::newRow("soft limit") << "MOVEJ: joint 3 would reach 125.00 deg, beyond its soft upper limit of 120.00 deg "
+                                 "(setJointLimit) at the target; choose a target (and for MOVEL/MOVEC a path) within "
+                                 "the limits, or change the limits"
+                              << "J3 would reach 125.00° at the target, beyond its upper limit of 120.00°";
+  QTest::newRow("box") << "MOVEL: the TCP would leave the safety box through its +x face (0.100 m from the box "
+                          "centre) and reach 0.150 m (setCartesianLimit) 62 % of the way; choose a target"
+                       << "cross the box's +x face at 62 % of the way";
   QTest::newRow("rebooting") << "startDrag: the controller is rebooting" << "restarting";
   QTest::newRow("guard") << "startDrag: the guard stop is active" << "Close it";
   QTest::newRow("lost") << "getMotorState: no response from 127.0.0.1:1337: no response within 500 ms; check the IP "

@@ -15,9 +15,12 @@
 #include <QTest>
 #include <QVBoxLayout>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <set>
+#include <thread>
+#include <utility>
 
 #include <xmate/move.h>
 
@@ -27,6 +30,7 @@
 #include "panels/lamp.h"
 #include "panels/tool_panel.h"
 #include "session/session.h"
+#include "sim/server.h"
 #include "window/parts.h"
 #include "gui_test_support.h"
 #include "window_driver.h"
@@ -121,6 +125,7 @@ class TestPanels : public QObject {
   void jogMovesJoint();
   void jogMovesTcp();
   void jointJogAdvancesByElapsedCycles();
+  void jogsKeepGoingThroughLostStates();
   void jointJogBrakesBeforeLimit();
   void stopsShowInSafetyPanel();
   void simulatorPanelDisabledWithoutSimulator();
@@ -482,6 +487,67 @@ void TestPanels::jointJogAdvancesByElapsedCycles() {
   }
   QVERIFY(a.q[0] > 0.001);  // it was moving
   QCOMPARE(b.q[0], a.q[0]);
+}
+
+// The joint and the Cartesian jog against the simulator on its real-time clock while it drops 2 % of
+// its states (a third in pairs) and three in a row now and then: each jog ramps up, runs, ramps down
+// after the release and ends without an error bit.
+void TestPanels::jogsKeepGoingThroughLostStates() {
+  using CM = RCI::robot::StartMoveRequest::ControllerMode;
+  using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
+  xmate::sim::ServerConfig config;
+  config.bind_ip = "127.0.0.1";
+  config.port = 0;
+  config.clock = xmate::sim::ClockMode::kRealTime;
+  xmate::sim::Server server(config);
+  server.start();
+  xmate::sim::StateLoss loss;
+  loss.probability = 0.02;
+  loss.pair_share = 0.3;
+  loss.seed = 5;
+  server.setStateLoss(loss);
+  xmate::Robot robot("127.0.0.1", server.port(), xmate::XMATE7_PRO);
+  robot.setMotorPower(1);
+  const auto& spec = xmate::model::robotSpec(xmate::XMATE7_PRO);
+  const JointLimitsRad limits = jogLimits(spec, false, {}, {});
+  auto releaseLater = [&server](JogFlags& flags) {
+    return std::thread([&server, &flags] {
+      for (int k = 0; k < 4; ++k) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        server.dropStates(3);
+      }
+      flags.held.store(false);
+    });
+  };
+  for (int direction : {+1, -1}) {
+    JogFlags flags;
+    JointJog jog(spec, 0, direction, 1.0, limits, flags);
+    std::thread release = releaseLater(flags);
+    try {
+      robot.startMove(CM::kJointPosition, MM::kJointPosition);
+      robot.Control(xmate::JointControl([&jog](RCI::robot::RobotState s) { return jog.next(s); }));
+    } catch (const std::exception& e) {
+      release.join();
+      QFAIL(e.what());
+    }
+    release.join();
+  }
+  // Towards the base, sideways and about z: away from the stretched arm, where a Cartesian jog at full
+  // speed runs into the joint velocity limits whether states are lost or not.
+  for (const auto& [axis, direction] : {std::pair{0, -1}, std::pair{1, +1}, std::pair{5, +1}}) {
+    JogFlags flags;
+    CartesianJog jog(axis, direction, 1.0, spec.dof, limits, flags);
+    std::thread release = releaseLater(flags);
+    try {
+      robot.startMove(CM::kCartesianPosition, MM::kCartesianPosition);
+      robot.Control(xmate::CartesianControl([&jog](RCI::robot::RobotState s) { return jog.next(s); }));
+    } catch (const std::exception& e) {
+      release.join();
+      QFAIL(qPrintable(QStringLiteral("Cartesian jog along axis %1: %2").arg(axis).arg(e.what())));
+    }
+    release.join();
+  }
+  QVERIFY(server.status().counters.states_dropped > 10);
 }
 
 void TestPanels::stopsShowInSafetyPanel() {

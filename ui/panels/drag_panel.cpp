@@ -56,7 +56,7 @@ DragPanel::DragPanel(Session& session, QWidget* parent)
   auto* stop = new QPushButton(tr("Stop guiding"), group);
   stop->setObjectName(QStringLiteral("drag.stop"));
   stop->setToolTip(tr("Stop hand guiding: the arm stops and holds its position"));
-  addSendWidget(start);
+  addMotionWidget(start);
   addSendWidget(stop);
   buttons->addStretch(1);
   buttons->addWidget(start);
@@ -84,7 +84,7 @@ void DragPanel::spaceChanged() {
 void DragPanel::start() {
   const int space = space_->currentData().toInt();
   const int type = type_->currentData().toInt();
-  const std::string error = xmate::model::checkDrag(space, type);
+  const xmate::model::ParameterProblem error = xmate::model::checkDrag(space, type);
   if (!error.empty()) {
     message_->showError(tr("Not sent: %1.").arg(text::valueRefusal(error)));
     return;

@@ -115,7 +115,7 @@ QPushButton* JogPanel::makeJogButton(const QString& name, const QString& text, c
   button->setToolTip(tip);
   button->setAutoRepeat(false);
   button->setMinimumWidth(44);
-  addSendWidget(button);
+  addMotionWidget(button);
   // The tooltip names the axis as the open robot's maker does (showModel()).
   connect(button, &QPushButton::pressed, this,
           [this, button, cartesian, axis, direction] { press(cartesian, axis, direction, button->toolTip()); });

@@ -28,6 +28,7 @@ PanelBase::PanelBase(Session& session, const QString& key, const QString& title,
   // All signals below are emitted on the GUI thread (Session queues its workers' results there).
   connect(&session_, &Session::commandFinished, this, &PanelBase::onCommandFinished);
   connect(&session_, &Session::tick, this, [this] {
+    updateMotionWidgets();
     if (session_.isOpen()) refresh(session_.live());
   });
   connect(&session_, &Session::opened, this, [this] {
@@ -89,9 +90,24 @@ void PanelBase::addSendWidget(QWidget* widget) {
   widget->setEnabled(session_.isOpen() && !session_.isReconnecting());
 }
 
+void PanelBase::addMotionWidget(QWidget* widget) {
+  motion_widgets_.append(widget);
+  motion_widgets_usable_ = session_.isOpen() && !session_.isReconnecting() && !session_.live().stopping;
+  widget->setEnabled(motion_widgets_usable_);
+}
+
 void PanelBase::updateSendWidgets() {
   const bool usable = session_.isOpen() && !session_.isReconnecting();
   for (auto* w : send_widgets_) w->setEnabled(usable);
+  updateMotionWidgets();
+}
+
+// Every display tick: only a change of the state touches the widgets.
+void PanelBase::updateMotionWidgets() {
+  const bool usable = session_.isOpen() && !session_.isReconnecting() && !session_.live().stopping;
+  if (usable == motion_widgets_usable_) return;
+  motion_widgets_usable_ = usable;
+  for (auto* w : motion_widgets_) w->setEnabled(usable);
 }
 
 void PanelBase::saveValue(const QString& name, const QVariant& value) const {

@@ -62,6 +62,9 @@ class PanelBase : public QWidget {
 
   // Widgets enabled only while a session is open (buttons that send).
   void addSendWidget(QWidget* widget);
+  // Buttons that start a motion or hand guiding: as send widgets, and disabled too while the arm is
+  // still coming to rest after a stop (LiveState::stopping).
+  void addMotionWidget(QWidget* widget);
 
   // Settings of this panel (organisation "RCI Studio", application "rci-studio", group key()).
   void saveValue(const QString& name, const QVariant& value) const;
@@ -80,6 +83,7 @@ class PanelBase : public QWidget {
  private:
   void onCommandFinished(const QString& label, bool ok, const QString& message);
   void updateSendWidgets();
+  void updateMotionWidgets();
 
   struct Pending {
     QString label;
@@ -90,6 +94,8 @@ class PanelBase : public QWidget {
   QVBoxLayout* body_ = nullptr;
   MessageLine* status_ = nullptr;
   QList<QWidget*> send_widgets_;
+  QList<QWidget*> motion_widgets_;
+  bool motion_widgets_usable_ = false;
   xmate::arm::Capabilities needs_ = 0;
   std::deque<Pending> pending_;
 };

@@ -756,8 +756,11 @@ void ProgramPanel::updateButtons() {
                                         QAbstractItemView::SelectedClicked);
   list_->setDragEnabled(!running_);
   // Recording a path and running exclude each other.
-  run_->setEnabled(isOpen() && model_->count() > 0 && !running_ && !recording);
-  step_->setEnabled(isOpen() && model_->count() > 0 && !recording && (!running_ || (paused && !goto_run_)));
+  // A run waits while the arm still comes to rest after a stop (the status bar says "stopping").
+  const bool stopping = isOpen() && session().live().stopping;
+  run_->setEnabled(isOpen() && model_->count() > 0 && !running_ && !recording && !stopping);
+  step_->setEnabled(isOpen() && model_->count() > 0 && !recording && !stopping &&
+                    (!running_ || (paused && !goto_run_)));
   pause_->setEnabled(moving);
   resume_->setEnabled(paused);
   stop_->setEnabled(running_);

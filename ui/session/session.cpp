@@ -333,6 +333,7 @@ void Session::Impl::updateLoopRate(uint64_t count) {
 
 void Session::Impl::refreshLive() {
   live.motion_running = link->motion.busy.load();
+  live.stopping = false;
   if (link->rsi) {
     refreshKuka();
     return;
@@ -340,6 +341,8 @@ void Session::Impl::refreshLive() {
   xmate::client::Connection& connection = link->robot->connection();
   if (connection.latestState(live.state)) {
     live.has_state = true;
+    live.standstill = connection.standstill();
+    live.stopping = xmate::client::stoppingOnItsOwn(live.standstill, live.state);
     live.tau_ext = externalJointTorques(*link->model, live.state.q, live.state.tau_ext_in_base);
     // The arm's view of the same state (not a second read: the two must agree).
     live.arm.sample = xmate::arm::armSample(xmate::client::makeStateSample(live.state, 0));

@@ -89,6 +89,10 @@ struct LiveState {
   std::array<bool, 6> digital_in{};    // polled, ~5 Hz
   std::array<bool, 6> digital_out{};   // as last set through run() (the robot cannot report it)
   bool motion_running = false;         // a runMotion() job is queued or executing
+  // The arm is coming to rest on its own after a stop, a recovered error or the end of hand guiding
+  // (xmate::client::stoppingOnItsOwn): motions wait, the window says "stopping ...". xMate only.
+  bool stopping = false;
+  xmate::client::Standstill standstill;  // the fastest joint and whether the arm stands still
   xmate::net::RealtimeStatus realtime; // what the client's real-time thread got
   xmate::client::SessionTiming timing; // loop rate, jitter, counters
   double loop_rate_hz = 0;             // states per second over the last second

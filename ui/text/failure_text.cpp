@@ -77,7 +77,8 @@ OperatorMessage motionRunning() {
               tr("Wait until it ends (release the jog button, or press Stop in the Program panel), then try again."));
 }
 OperatorMessage stillStopping() {
-  return says(tr("The robot is still stopping"), {}, tr("Wait a moment, then try again."));
+  return says(tr("The arm is still coming to rest"), {},
+              tr("Wait until the status bar no longer says \"stopping\", then try again."));
 }
 OperatorMessage rebooting() {
   return says(tr("The controller is restarting"), {}, tr("Wait until the window has reconnected, then try again."));
@@ -116,12 +117,12 @@ Found refuseFromState(const Parsed& p, const RobotView& view) {
 
 // Refusals whose reason depends on the command.
 Found refuseByCommand(const Parsed& p) {
-  if (callIs(p, "setJointLimit"))
-    return says(tr("The robot refused the soft limits"), tr("A joint is outside the new range, or the robot is moving."),
-                tr("Jog or guide the joint inside the new range first (or widen it), then apply again."));
-  if (callIs(p, "setCartesianLimit"))
-    return says(tr("The robot refused the safety box"), tr("The TCP is outside the new box, or the robot is moving."),
+  if (callIs(p, "setCartesianLimit") && has(p, "outside the requested box"))
+    return says(tr("The robot refused the safety box"), tr("The TCP is outside the new box."),
                 tr("Move the TCP inside first or enlarge the box (Centre on TCP helps), then apply again."));
+  if (callIs(p, "setJointLimit") || callIs(p, "setCartesianLimit"))
+    return says(callIs(p, "setJointLimit") ? tr("The robot refused the soft limits") : tr("The robot refused the safety box"),
+                {}, tr("Apply them again once the robot stands still."));
   if (callIs(p, "automaticErrorRecovery"))
     return says(tr("Recover was refused"), tr("The robot cannot recover in its current state."),
                 tr("Release the emergency stop if it is pressed and close the guard, then press Recover again."));
@@ -138,7 +139,7 @@ Found refuseByCommand(const Parsed& p) {
 // The hints the library adds to a refusal, when the live state could not say more.
 Found refuseByHint(const Parsed& p, const RobotView& view) {
   if (has(p, "a motion is already running") || has(p, "a motion is running")) return motionRunning();
-  if (has(p, "hand guiding is active")) return guiding();
+  if (has(p, "hand guiding is active") || has(p, "hand guiding is on")) return guiding();
   if (has(p, "emergency stop is pressed") || has(p, "aborted by an emergency stop") || has(p, "manual recovery required"))
     return emergencyStop();
   if (has(p, "aborted by a reflex") || has(p, "error bits are set") || has(p, "aborted by an error")) return errorsSet(view);
@@ -152,10 +153,10 @@ Found refuseByHint(const Parsed& p, const RobotView& view) {
                 tr("Jog a joint a little (Jog panel, joint buttons), then try again."));
   if (has(p, "not possible in the robot's current state")) {
     if (Found m = refuseByCommand(p)) return m;
-    if (callIs(p, "startMove") || callIs(p, "startDrag"))
-      return says(tr("The robot cannot start this now"), {},
-                  tr("Check that the motors are on (Power panel), hand guiding is stopped (Drag panel) and no stop "
-                     "is active (Safety panel), then try again."));
+    if (has(p, "gave no reason"))
+      return says(tr("The robot refused without a reason"),
+                  tr("The motors are on, no stop or error is active and the arm stands still."),
+                  tr("Try again; if it keeps refusing, restart the controller."));
     return says(tr("The robot cannot do this now"), tr("It may be moving, hand guided or still stopping."),
                 tr("Wait a moment, then try again."));
   }
@@ -241,6 +242,31 @@ Found planning(const Parsed& p) {
                 tr("It puts J%1 at %2°, outside %3° to %4°.").arg(m.captured(1).toInt() + 1).arg(deg(2), deg(3), deg(4)),
                 tr("Re-teach the target (Touch up in the Program panel)."));
   }
+  static const QRegularExpression joint_limit(QStringLiteral(
+      R"(joint (\d) would reach (-?[\d.]+) deg, beyond its (soft )?(upper|lower) limit of (-?[\d.]+) deg.*?(at the target|(\d+) % of the way))"));
+  if (const auto m = joint_limit.match(p.body); m.hasMatch()) {
+    const bool soft = !m.captured(3).isEmpty();
+    const QString where = m.captured(6) == QLatin1String("at the target") ? tr("at the target")
+                                                                         : tr("at %1 % of the way").arg(m.captured(7));
+    return says(soft ? tr("The motion would pass a soft limit") : tr("The motion would leave the joint range"),
+                tr("J%1 would reach %2° %3, beyond its %4 limit of %5°. Nothing moved.")
+                    .arg(m.captured(1), m.captured(2), where,
+                         m.captured(4) == QLatin1String("upper") ? tr("upper") : tr("lower"), m.captured(5)),
+                soft ? tr("Re-teach the target within the limits, or widen them in the Soft limits panel.")
+                     : tr("Re-teach the target (Touch up in the Program panel)."));
+  }
+  static const QRegularExpression box(QStringLiteral(
+      R"(leave the safety box through its ([+-][xyz]) face \((-?[\d.]+) m from the box centre\) and reach (-?[\d.]+) m.*?(at the target|(\d+) % of the way))"));
+  if (const auto m = box.match(p.body); m.hasMatch()) {
+    const QString where = m.captured(4) == QLatin1String("at the target") ? tr("at the target")
+                                                                         : tr("at %1 % of the way").arg(m.captured(5));
+    return says(tr("The motion would leave the safety box"),
+                tr("The TCP would cross the box's %1 face %2 (%3 m from its centre, the TCP at %4 m). Nothing moved.")
+                    .arg(m.captured(1), where, m.captured(2), m.captured(3)),
+                tr("Re-teach the target inside the box, add a waypoint inside it, or enlarge the box in the Safety box "
+                   "panel."));
+  }
+  if (has(p, "still stopping")) return stillStopping();
   if (has(p, "ik failed during the motion"))
     return says(tr("The path could not be followed during the motion"), tr("The motion was stopped."),
                 tr(kRetouch));

@@ -140,7 +140,16 @@ void StatusStrip::refreshOpen() {
   }
   const RCI::robot::RobotState& state = live.state;
   const bool reflex = state.robot_mode == RCI::robot::RobotMode::kReflex;
-  setField(mode_, tr("Mode: %1").arg(robotModeText(state.robot_mode)), reflex ? kBad : kNormal);
+  if (live.stopping) {
+    // Motions wait for the arm to stand still; the buttons that start one are disabled meanwhile.
+    setField(mode_, tr("Mode: %1 · stopping …").arg(robotModeText(state.robot_mode)), kWarn);
+    mode_->setToolTip(tr("The arm is coming to rest (joint %1 at %2 deg/s). Motions can start once it stands still.")
+                          .arg(live.standstill.fastest_joint + 1)
+                          .arg(live.standstill.fastest_speed * 180.0 / 3.14159265358979323846, 0, 'f', 1));
+  } else {
+    setField(mode_, tr("Mode: %1").arg(robotModeText(state.robot_mode)), reflex ? kBad : kNormal);
+    mode_->setToolTip(tr("What the robot is doing, as its controller reports it"));
+  }
   setField(motors_, live.motor_state == 1 ? tr("Motors on") : tr("Motors off"), live.motor_state == 1 ? kGood : kNormal);
 
   showRealtime(realtime_, live.realtime);

@@ -17,9 +17,14 @@ struct cart_pos {
   double psi = 0;
 };
 
-// speed_ratio in (0, 1]. Throw MotionException when planning fails (unreachable, collinear arc
-// points, limits) and ControlException when the controller aborts. Return true when the target
-// was reached.
+// speed_ratio in (0, 1]: 1.0 plans with 85 % of the rated velocity, acceleration and jerk, keeping
+// the rest to rejoin the plan after lost states without breaking a limit. Before anything moves the
+// target (and for MOVEL/MOVEC the path) is checked against the joint range, the soft limits set with
+// setJointLimit and the safety box set with setCartesianLimit; a motion that would leave them throws
+// MotionException naming the joint or face, the limit and the value (moving back towards them is
+// allowed). Throw MotionException when planning fails (unreachable, collinear arc points, limits),
+// when the arm is still stopping after a stop (startMove), and ControlException when the controller
+// aborts. Caller's thread, blocking. Return true when the target was reached.
 bool MOVEJ(double speed_ratio, const std::array<double, 7>& q_start, const std::array<double, 7>& q_target,
            Robot& robot);
 bool MOVEL(double speed_ratio, cart_pos& start, cart_pos& target, Robot& robot);

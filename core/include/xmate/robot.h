@@ -31,13 +31,27 @@ class Robot {
   bool reconnect();
 
   // ---- Motion -----------------------------------------------------------------------------
+  // While the arm is still coming to rest after a stop, a recovered reflex or the end of hand
+  // guiding, startMove (and startDrag) wait for standstill, at most 1 s, then throw
+  // MotionException naming the moving joint. A refusal by the controller (CommandException) names
+  // the cause that holds: error bits, emergency or guard stop, motors off, hand guiding on, a
+  // motion running, or the arm still moving. Caller's thread, blocking.
   void startMove(RCI::robot::StartMoveRequest::ControllerMode controller_mode,
                  RCI::robot::StartMoveRequest::MotionGeneratorMode motion_mode);
   void stopMove();
   // Calls the callback once per 1 ms cycle with the newest state and sends what it returns;
-  // blocks until the callback returns MotionFinished(...). Throws ControlException when the
-  // controller reports error bits, InvalidOperationException when startMove() did not select a
-  // matching mode.
+  // blocks until the callback returns MotionFinished(...). The caller's thread blocks; the callback
+  // runs on the robot's real-time thread and must not block, allocate or lock.
+  // Lost states: when states never reached this PC (or were left unanswered after a stall of the
+  // real-time thread), the callback is first called once for each missed cycle, oldest first --
+  // with the newest state, its message_id set to the missed cycle's -- and those outputs are not
+  // sent (a MotionFinished among them is: it ends the motion); then it is called for the newest
+  // state, whose output is sent. So the callback runs exactly once per controller cycle, and a
+  // program that keeps time by counting calls (time += 0.001, as in the vendor manual) stays on the
+  // controller's clock. At most 20 missed cycles are replayed (the controller stops a motion after
+  // about 15 lost commands in a row).
+  // Throws ControlException when the controller reports error bits, InvalidOperationException
+  // when startMove() did not select a matching mode.
   void Control(JointControl callback);
   void Control(CartesianControl callback);
   void Control(TorqueControl callback);

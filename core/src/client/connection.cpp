@@ -75,7 +75,12 @@ void Connection::openLocked() {
     rt.controller = controller;
     startRealtimeThread();
     handshake();
-    updateRemembered([](Remembered& r) { r.move_armed = false; });  // a new session has no motion started
+    // A new session has no motion started, and the limits sent to an earlier one may not hold for
+    // it (a restarted controller starts with its own): they are checked again once sent again.
+    updateRemembered([](Remembered& r) {
+      r.move_armed = false;
+      r.limits = MotionLimits{};
+    });
     ever_opened_.store(true);
   } catch (const XmateException&) {
     closeLocked();
@@ -216,6 +221,30 @@ bool Connection::latestState(RCI::robot::RobotState& out) const {
   return rt_->latest.load(out) > rt_->latest_base.load();
 }
 
+Standstill Connection::standstill() const {
+  Standstill s;
+  rt_->standstill.load(s);
+  return s;
+}
+
+StandstillWait Connection::awaitStandstill(const char* call) {
+  const int64_t deadline = net::monotonicNs() + int64_t(kStandstillWaitMs) * 1'000'000;
+  RCI::robot::RobotState first;
+  bool waited = false;
+  for (;;) {
+    RCI::robot::RobotState newest;
+    if (!latestState(newest)) return {};  // nothing known yet: the controller decides
+    if (!waited) first = newest;
+    const Standstill s = standstill();
+    if (!stoppingOnItsOwn(s, newest)) return waited ? travelBetween(first, newest, rt_->dof) : StandstillWait{};
+    waited = true;
+    if (net::monotonicNs() > deadline)
+      throw MotionException(std::string(call) + ": " + stillStoppingText(s) +
+                            "; wait until it stands still, then try again");
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
 SessionTiming Connection::timing() const {
   SessionTiming t;
   rt_->timing.load(t);
@@ -235,13 +264,17 @@ void Connection::beginMotionHold(ControlKind kind) {
 
 void Connection::endMotionHold() { rt_->hold_kind.store(0, std::memory_order_release); }
 
-ControlResult Connection::runControl(const JointControl& callback) { return runControl(ControlKind::kJoint, &callback); }
-ControlResult Connection::runControl(const CartesianControl& callback) {
-  return runControl(ControlKind::kCartesian, &callback);
+ControlResult Connection::runControl(const JointControl& callback, MissedStates missed) {
+  return runControl(ControlKind::kJoint, &callback, missed);
 }
-ControlResult Connection::runControl(const TorqueControl& callback) { return runControl(ControlKind::kTorque, &callback); }
+ControlResult Connection::runControl(const CartesianControl& callback, MissedStates missed) {
+  return runControl(ControlKind::kCartesian, &callback, missed);
+}
+ControlResult Connection::runControl(const TorqueControl& callback, MissedStates missed) {
+  return runControl(ControlKind::kTorque, &callback, missed);
+}
 
-ControlResult Connection::runControl(ControlKind kind, const void* callback) {
+ControlResult Connection::runControl(ControlKind kind, const void* callback, MissedStates missed) {
   Realtime& rt = *rt_;
   ControlResult result;
   result.kind = kind;
@@ -256,6 +289,7 @@ ControlResult Connection::runControl(ControlKind kind, const void* callback) {
     throw InvalidOperationException("Control(): another Control() run is active on this session");
   rt.kind = kind;
   rt.callback = callback;
+  rt.replay_missed = missed == MissedStates::kReplay;
   if (!rt.run_state.compare_exchange_strong(idle, kRunArmed))
     throw InvalidOperationException("Control(): another Control() run is active on this session");
   endMotionHold();  // the run answers from now on (the thread checks the run first)
@@ -278,6 +312,10 @@ ControlResult Connection::runControl(ControlKind kind, const void* callback) {
   result.longest_stall_ms = double(rt.longest_stall_ns) * 1e-6;
   result.stall_message_id = rt.stall_message_id;
   result.states_skipped = rt.states_skipped;
+  result.states_missed = rt.states_missed_in_run;
+  result.longest_miss = rt.longest_miss;
+  result.miss_message_id = rt.miss_message_id;
+  result.states_replayed = rt.states_replayed;
   const uint64_t count = std::min<uint64_t>(rt.log_written, kControlLogLength);
   result.log.reserve(count);
   for (uint64_t i = rt.log_written - count; i < rt.log_written; ++i) result.log.push_back(rt.log[i % kLogCapacity]);

@@ -21,6 +21,8 @@
 #include <xmate/types.h>
 
 #include "client/command_checks.h"
+#include "client/limit_check.h"
+#include "client/standstill.h"
 #include "client/state_sample.h"
 #include "client/tcp_session.h"
 #include "net/cycle_stats.h"
@@ -69,6 +71,19 @@ struct SessionTiming {
   SessionCounters counters;
 };
 
+// What a Control() run does with states its callback did not see: datagrams lost on the way, and
+// states left unanswered behind a newer one after a stall of the client's loop.
+enum class MissedStates {
+  // Before answering the newest state, the callback is called once per missed message_id, oldest
+  // first, with the newest state whose message_id is set to the missed one; those outputs are not
+  // sent (only one that returns motion_finished is: it ends the motion). Programs that keep time by
+  // counting calls (time += 0.001, as in the vendor manual) stay on the controller's clock.
+  kReplay,
+  // The callback sees the gap in message_id: for generators that keep time by message_id and
+  // bridge gaps themselves (MOVEJ/MOVEL/MOVEC, the teach executor: stall_bridge.h).
+  kSkip,
+};
+
 // How a Control() run ended (runControl()).
 enum class ControlOutcome {
   kFinished,              // the callback returned motion_finished and the controller ended the motion
@@ -98,6 +113,13 @@ struct ControlResult {
   double longest_stall_ms = 0;
   uint64_t stall_message_id = 0;
   uint64_t states_skipped = 0;
+  // States the callback missed (lost on the way or skipped after a stall): how many in all, the
+  // longest run of consecutive ones and the message_id that ended it, and how many were replayed
+  // (MissedStates::kReplay).
+  uint64_t states_missed = 0;
+  uint64_t longest_miss = 0;
+  uint64_t miss_message_id = 0;
+  uint64_t states_replayed = 0;
 };
 
 inline constexpr size_t kControlLogLength = 50;
@@ -147,6 +169,15 @@ class Connection {
   RCI::robot::RobotState waitForState();
   // Copies the newest state; false if none arrived yet. Never blocks.
   bool latestState(RCI::robot::RobotState& out) const;
+  // Whether the arm stands still (standstill.h), from the states so far. Never blocks.
+  Standstill standstill() const;
+  // Before a motion or hand guiding is asked for: while the arm is coming to rest on its own (after
+  // a stop, a reflex that was recovered, the end of hand guiding) waits for it to stand still, at
+  // most kStandstillWaitMs; then throws MotionException "<call>: the arm is still stopping (joint 2
+  // at 0.12 rad/s); wait until it stands still, then try again". Returns at once otherwise (the
+  // controller itself refuses a motion while one runs, during hand guiding or with error bits).
+  // Returns how far the arm moved meanwhile.
+  StandstillWait awaitStandstill(const char* call);
   // The GUI's ring of compact samples: exactly one consumer thread may pop.
   SampleRing& samples() { return *samples_; }
   SessionTiming timing() const;
@@ -165,9 +196,9 @@ class Connection {
   // caller takes to reach Control(). endMotionHold() stops that (refused StartMove, stopMove()).
   void beginMotionHold(ControlKind kind);
   void endMotionHold();
-  ControlResult runControl(const JointControl& callback);
-  ControlResult runControl(const CartesianControl& callback);
-  ControlResult runControl(const TorqueControl& callback);
+  ControlResult runControl(const JointControl& callback, MissedStates missed = MissedStates::kReplay);
+  ControlResult runControl(const CartesianControl& callback, MissedStates missed = MissedStates::kReplay);
+  ControlResult runControl(const TorqueControl& callback, MissedStates missed = MissedStates::kReplay);
 
   // ---- Settings remembered for the API's extensions (Robot::toolFrame(), load(), startMove) ------
   // Any thread: remembered() returns a copy, updateRemembered(f) calls f(Remembered&) and returns
@@ -177,6 +208,7 @@ class Connection {
     double load_mass = 0;
     std::array<double, 3> load_center{};
     std::array<double, 9> load_inertia{};
+    MotionLimits limits;      // setJointLimit, setCartesianLimit (limit_check.h)
     bool move_armed = false;  // startMove() succeeded and no Control()/stopMove() since
     RCI::robot::StartMoveRequest::ControllerMode controller_mode{};
     RCI::robot::StartMoveRequest::MotionGeneratorMode motion_mode{};
@@ -198,7 +230,7 @@ class Connection {
   static protocol::Command commandOf(const M&) { return M::kCommand; }
   static protocol::Command commandOf(const protocol::EmptyRequest& m) { return m.command; }
 
-  ControlResult runControl(ControlKind kind, const void* callback);
+  ControlResult runControl(ControlKind kind, const void* callback, MissedStates missed);
   void openLocked();
   void closeLocked();
   void handshake();

@@ -21,6 +21,7 @@ constexpr int64_t kTimingRefreshNs = 100'000'000;  // SessionTiming is republish
 // ---- The end of a run ------------------------------------------------------------------------------
 
 void endRun(Connection::Realtime& rt, ControlOutcome outcome) {
+  rt.hold_requested_ns = -1;  // the next request holds where the arm is then
   rt.outcome = outcome;
   rt.last_state = rt.state;
   rt.run_active = false;  // before kDone: the caller may arm the next run right after it
@@ -38,6 +39,12 @@ void clearRunResult(Connection::Realtime& rt) {
   rt.longest_stall_ns = 0;
   rt.stall_message_id = 0;
   rt.states_skipped = 0;
+  rt.states_missed_in_run = 0;
+  rt.longest_miss = 0;
+  rt.miss_message_id = 0;
+  rt.states_replayed = 0;
+  rt.callback_called = false;
+  rt.last_called_id = 0;
 }
 
 void logCycle(Connection::Realtime& rt, const RobotCommand* answered) {
@@ -49,10 +56,9 @@ void logCycle(Connection::Realtime& rt, const RobotCommand* answered) {
 
 // ---- Building the command from the callback's answer ----------------------------------------------
 
-// Calls the callback for rt.state and fills rt.command (keeping the motion fields the mode does
-// not use at harmless values). Returns the fault found in what the callback returned.
-CommandFault callCallback(Connection::Realtime& rt, bool& finished) {
-  const RobotState& s = rt.state;
+// Calls the callback for s and fills rt.command (keeping the motion fields the mode does not use at
+// harmless values). Returns the fault found in what the callback returned.
+CommandFault callCallback(Connection::Realtime& rt, const RobotState& s, bool& finished) {
   RobotCommand& c = rt.command;
   c.message_id = s.message_id;
   switch (rt.kind) {
@@ -105,12 +111,52 @@ void sendCommand(Connection::Realtime& rt, const net::Endpoint& to) {
   ++rt.cycles;
 }
 
-// Calls the callback for the newest state and answers it; ends the run if the callback throws or
-// returns something that must not be sent.
+// Counts the message_ids between the callback's last state and the newest one: states it missed.
+// Returns how many.
+uint64_t noteMissedStates(Connection::Realtime& rt) {
+  if (!rt.callback_called) return 0;
+  const uint64_t missed = rt.state.message_id - rt.last_called_id - 1;
+  if (missed == 0) return 0;
+  rt.states_missed_in_run += missed;
+  if (missed > rt.longest_miss) {
+    rt.longest_miss = missed;
+    rt.miss_message_id = rt.state.message_id;
+  }
+  return missed;
+}
+
+// MissedStates::kReplay: the callback runs once for each missed message_id (at most
+// kMaxReplayedStates, the newest ones), with the newest state stamped with that message_id; its
+// outputs are superseded by the newest state's. Stops early when one says motion_finished: that
+// output becomes the command. Returns false if the run ended (the callback threw or returned
+// something that must not be sent).
+bool replayMissedStates(Connection::Realtime& rt, uint64_t missed, bool& finished) {
+  const uint64_t count = missed < kMaxReplayedStates ? missed : kMaxReplayedStates;
+  rt.replayed = rt.state;
+  for (uint64_t id = rt.state.message_id - count; id < rt.state.message_id && !finished; ++id) {
+    rt.replayed.message_id = id;
+    rt.fault = callCallback(rt, rt.replayed, finished);
+    ++rt.states_replayed;
+    if (rt.fault.kind != CommandFault::kNone) {
+      logCycle(rt, &rt.command);
+      endRun(rt, ControlOutcome::kInvalidCommand);
+      return false;
+    }
+  }
+  rt.command.message_id = rt.state.message_id;
+  return true;
+}
+
+// Calls the callback for the newest state (after the missed ones, MissedStates::kReplay) and
+// answers it; ends the run if the callback throws or returns something that must not be sent.
 void answerWithCallback(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
   bool finished = false;
+  const uint64_t missed = noteMissedStates(rt);
+  rt.callback_called = true;
+  rt.last_called_id = rt.state.message_id;
   try {
-    rt.fault = callCallback(rt, finished);
+    if (missed > 0 && rt.replay_missed && !replayMissedStates(rt, missed, finished)) return;
+    if (!finished) rt.fault = callCallback(rt, rt.state, finished);
   } catch (...) {
     rt.exception = std::current_exception();
     logCycle(rt, nullptr);
@@ -147,17 +193,28 @@ void awaitEnd(Connection::Realtime& rt, bool moving, const net::Endpoint& from, 
   logCycle(rt, &rt.command);
 }
 
-// Answers the newest state with "hold still": the measured position (joint and Cartesian) and no
-// extra torque. Sent between StartMove and the start of the Control() run.
-void answerWithHold(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
+// The "hold still" command of the current motion request: the measured position (joint and
+// Cartesian) of the first state answered for the request, and no extra torque.
+const RobotCommand& holdCommand(Connection::Realtime& rt) {
+  const int64_t requested = rt.motion_requested_ns.load(std::memory_order_relaxed);
+  if (rt.hold_requested_ns == requested) return rt.hold_command;
   const RobotState& s = rt.state;
-  RobotCommand& c = rt.command;
+  RobotCommand& c = rt.hold_command;
   c = RobotCommand{};
-  c.message_id = s.message_id;
   c.motion.q_c = s.q;
   if (rt.dof == 6) c.motion.q_c[6] = 0;
   c.motion.toolTobase_pos_c = s.toolTobase_pos_m;
   c.motion.psi_c = s.psi_m;
+  rt.hold_requested_ns = requested;
+  return c;
+}
+
+// Answers the newest state with "hold still" (holdCommand). Sent between StartMove and the start of
+// the Control() run, and until the controller reports the motion running.
+void answerWithHold(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
+  RobotCommand& c = rt.command;
+  c = holdCommand(rt);
+  c.message_id = rt.state.message_id;
   sendCommand(rt, from);
   rt.cost_stats.record(net::monotonicNs() - received_ns);
 }
@@ -255,6 +312,7 @@ bool acceptState(Connection::Realtime& rt, long size, int64_t received_ns) {
   rt.last_state_ns = received_ns;
   ++rt.counters.states_received;
   rt.latest.store(rt.state);  // hand-off: seqlock (newest state for receiveRobotState())
+  rt.standstill.store(rt.standstill_watch.update(rt.state, rt.dof));  // hand-off: seqlock
   const double t = double(received_ns - rt.session_start_ns) * 1e-9;
   if (!rt.samples->push(makeStateSample(rt.state, t)))  // hand-off: SPSC ring to the GUI
     ++rt.counters.samples_dropped;

@@ -13,6 +13,7 @@
 #include <xmate/rci_types.h>
 
 #include "client/connection.h"
+#include "client/standstill.h"
 #include "protocol/realtime_codec.h"
 
 namespace xmate::client {
@@ -57,6 +58,7 @@ struct Connection::Realtime {
   net::Seqlock<RCI::robot::RobotState> latest;  // newest in-order state (seqlock: any reader)
   std::atomic<uint64_t> latest_base{0};         // latest.version() when the session opened (caller; any reader)
   net::Seqlock<SessionTiming> timing;           // refreshed every 100 ms (seqlock: any reader)
+  net::Seqlock<Standstill> standstill;          // with every accepted state (seqlock: any reader)
   std::atomic<uint64_t> wrong_length_count{0};  // datagrams of another size (atomic counter)
   std::atomic<uint64_t> last_wrong_length{0};
 
@@ -69,6 +71,7 @@ struct Connection::Realtime {
   net::CycleStats period_stats{1000.0, 1500.0};
   net::CycleStats cost_stats{1000.0, 1000.0};
   SessionCounters counters;
+  StandstillWatch standstill_watch;
   alignas(8) std::array<uint8_t, protocol::kRobotStateSize + 64> datagram{};
   RCI::robot::RobotState incoming;  // the datagram being decoded
   RCI::robot::RobotState state;     // the newest accepted state
@@ -79,6 +82,11 @@ struct Connection::Realtime {
   std::atomic<uint32_t> hold_kind{0};               // caller -> thread: 0 none, else ControlKind + 1
   std::atomic<int64_t> motion_requested_ns{0};      // caller -> thread: when StartMove was sent
   uint64_t last_answered_id = 0;                    // thread: message_id of the last command sent
+  // thread: the "hold still" command of the current motion request -- the measured position of the
+  // first state answered for it, repeated (the arm may still creep: following its measured position
+  // every cycle would make a jerky command stream) -- and the request it belongs to.
+  RCI::robot::RobotCommand hold_command;
+  int64_t hold_requested_ns = -1;
 
   // ---- The Control() run (see RunState) -------------------------------------------------------------
   std::atomic<uint32_t> run_state{kRunIdle};
@@ -86,11 +94,15 @@ struct Connection::Realtime {
   // request (caller, before kArmed)
   ControlKind kind = ControlKind::kJoint;
   const void* callback = nullptr;  // const JointControl* / CartesianControl* / TorqueControl*
+  bool replay_missed = true;       // MissedStates::kReplay
   // progress (thread)
   RunPhase phase = RunPhase::kWaitingForStart;
   int64_t run_start_ns = 0;
   uint32_t phase_states = 0;       // states seen in the current waiting phase
   RCI::robot::RobotCommand command;  // the last command sent
+  bool callback_called = false;    // the callback has run for a state of this run
+  uint64_t last_called_id = 0;     // the message_id it last ran for
+  RCI::robot::RobotState replayed; // the state handed to it for a missed message_id
   std::array<ControlRecord, kLogCapacity> log{};
   uint64_t log_written = 0;
   // result (thread, before kDone)
@@ -103,7 +115,15 @@ struct Connection::Realtime {
   int64_t longest_stall_ns = 0;     // the longest time between two wake-ups of the loop during the run
   uint64_t stall_message_id = 0;    // the newest state when the loop woke from that stall
   uint64_t states_skipped = 0;      // states published but not answered (a newer one was queued)
+  uint64_t states_missed_in_run = 0;  // message_ids the callback did not run for in time
+  uint64_t longest_miss = 0;        // the longest run of them ...
+  uint64_t miss_message_id = 0;     // ... and the message_id that ended it
+  uint64_t states_replayed = 0;     // missed message_ids the callback was called for afterwards
 };
+
+// At most this many missed states are replayed before the newest one: the controller stops a motion
+// after about 15 commands lost in a row, so older ones would only cost time.
+inline constexpr uint64_t kMaxReplayedStates = 20;
 
 // The thread's body (connection_rt.cpp). Each wake-up reads every datagram already queued; all
 // states are published, only the newest is answered (after a stall the controller waits for the

@@ -15,6 +15,9 @@
 
 #include <xmate/joint_motion.h>
 
+#include "client/clocked_control.h"
+#include "client/connection.h"
+#include "client/limit_check.h"
 #include "client/move_check.h"
 #include "client/stall_bridge.h"
 #include "model/robot_spec.h"
@@ -66,6 +69,13 @@ void requireWithinJointRange(const char* call, const std::array<double, 7>& q, c
                             "; choose a reachable target");
 }
 
+// Refuses a motion that leaves the joint range, the soft limits or the safety box (limit_check.h).
+void requireWithinLimits(const char* call, const std::string& problem) {
+  if (!problem.empty())
+    throw MotionException(std::string(call) + ": " + problem +
+                          "; choose a target (and for MOVEL/MOVEC a path) within the limits, or change the limits");
+}
+
 // A kinematic model with the robot's tool: the caller's (copied, so its settings stay untouched) or
 // an offline one. Joint speeds are checked over the whole path, not by IK per step.
 XmateModel pathModel(Robot& robot, const XmateModel* user_model) {
@@ -101,10 +111,12 @@ bool moveCartesian(const char* call, double speed_ratio, cart_pos& start, const 
                    Robot& robot, XmateModel* user_model) {
   client::requireSpeedRatio(call, speed_ratio);
   const model::RobotSpec& spec = model::robotSpec(robot.type());
+  robot.connection().ensureOpen();
+  const client::StandstillWait moved = robot.connection().awaitStandstill(call);  // after a stop: plan from rest
   const RobotState state = robot.receiveRobotState();
   XmateModel model = pathModel(robot, user_model);
   if (user_model) requireModelMatchesRobot(call, model, state);
-  client::requireStartPose(call, start.pos, state.toolTobase_pos_m);
+  client::requireStartPose(call, start.pos, state.toolTobase_pos_m, moved);
 
   // Start exactly where the robot is (the controller measures the first command against it).
   const std::array<double, 7> q0 = state.q;
@@ -115,17 +127,22 @@ bool moveCartesian(const char* call, double speed_ratio, cart_pos& start, const 
                           " rad; pass the current state (or psi_valid = false)");
   const std::array<double, 16> pose0 = model.GetCartPose(q0);
   const planning::CartesianPath path = makePath(pose0, psi0, via, target);
-  const planning::CartesianTrajectory trajectory = client::planWithinJointLimits(call, path, speed_ratio, XmateModelAccess::kinematics(model), q0);
+  const double share = client::planShare(speed_ratio);
+  client::JointSamples joints;
+  const planning::CartesianTrajectory trajectory =
+      client::planWithinJointLimits(call, path, share, XmateModelAccess::kinematics(model), q0, &joints);
   if (planning::duration(trajectory) <= 0) return true;
+  client::LimitWatch watch(spec, robot.connection().remembered().limits, q0, &XmateModelAccess::kinematics(model));
+  requireWithinLimits(call, client::checkJointPath(watch, joints));
 
   MotionClock clock;
   if (user_model) {
     // Joint position mode, IK every cycle from the previous command (and, after a stall of the
     // loop, for the two cycles before: the bridge needs the plan's rates there).
     std::array<double, 7> q_prev = q0;
-    client::StallBridge bridge(spec.dof, client::jointBridgeLimits(spec, speed_ratio));
+    client::StallBridge bridge(spec.dof, client::jointBridgeLimits(spec, share));
     robot.startMove(CM::kJointPosition, MM::kJointPosition);
-    robot.Control(JointControl([&](RobotState s) -> JointPositions {
+    client::controlByMessageId(robot, JointControl([&](RobotState s) -> JointPositions {
       const bool starting = !clock.started;
       const double t = clock.at(s);
       if (starting && clock.started) bridge.startAt(s.message_id, s.q_c);
@@ -149,9 +166,9 @@ bool moveCartesian(const char* call, double speed_ratio, cart_pos& start, const 
   } else {
     // Cartesian position mode: the controller solves IK; we send the pose and the arm angle.
     const Eigen::Matrix3d reference = trajectory.path.start.pose.linear();
-    client::StallBridge bridge(7, client::cartesianBridgeLimits(speed_ratio));
+    client::StallBridge bridge(7, client::cartesianBridgeLimits(share));
     robot.startMove(CM::kCartesianPosition, MM::kCartesianPosition);
-    robot.Control(CartesianControl([&](RobotState s) -> CartesianPose {
+    client::controlByMessageId(robot, CartesianControl([&](RobotState s) -> CartesianPose {
       const bool starting = !clock.started;
       const double t = clock.at(s);
       if (starting && clock.started)
@@ -182,18 +199,30 @@ bool MOVEJ(double speed_ratio, const std::array<double, 7>& q_start, const std::
   const model::RobotSpec& spec = model::robotSpec(robot.type());
   requireFinite(call, "q_target", q_target, spec.dof);
   requireWithinJointRange(call, q_target, spec);
+  robot.connection().ensureOpen();
+  const client::StandstillWait moved = robot.connection().awaitStandstill(call);  // after a stop: plan from rest
   const RobotState state = robot.receiveRobotState();
-  client::requireStartJoints(call, q_start, state.q, spec.dof);
+  client::requireStartJoints(call, q_start, state.q, spec.dof, moved);
+  const client::MotionLimits limits = robot.connection().remembered().limits;
+  if (limits.box_active) {
+    XmateModel model = pathModel(robot, nullptr);
+    client::LimitWatch watch(spec, limits, state.q, &XmateModelAccess::kinematics(model));
+    requireWithinLimits(call, client::checkJointLine(watch, state.q, q_target, spec.dof));
+  } else {
+    client::LimitWatch watch(spec, limits, state.q, nullptr);
+    requireWithinLimits(call, client::checkJointLine(watch, state.q, q_target, spec.dof));
+  }
 
   std::array<double, 7> q0 = state.q;
-  JointMotionGenerator generator(speed_ratio, q_target, robot.type());
+  const double share = client::planShare(speed_ratio);
+  JointMotionGenerator generator(share, q_target, robot.type());
   generator.calculateSynchronizedValues_joint(q0);
   if (generator.GetTime() <= 0) return true;
 
   MotionClock clock;
-  client::StallBridge bridge(spec.dof, client::jointBridgeLimits(spec, speed_ratio));
+  client::StallBridge bridge(spec.dof, client::jointBridgeLimits(spec, share));
   robot.startMove(CM::kJointPosition, MM::kJointPosition);
-  robot.Control(JointControl([&](RobotState s) -> JointPositions {
+  client::controlByMessageId(robot, JointControl([&](RobotState s) -> JointPositions {
     const bool starting = !clock.started;
     const double t = clock.at(s);
     if (starting && clock.started) {

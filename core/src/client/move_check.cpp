@@ -36,12 +36,12 @@ void requireSpeedRatio(const char* call, double speed_ratio) {
 }
 
 void requireStartJoints(const char* call, const std::array<double, 7>& q_start, const std::array<double, 7>& q_actual,
-                        int dof) {
+                        int dof, const StandstillWait& moved) {
   for (int i = 0; i < dof; ++i) {
     if (!std::isfinite(q_start[i]))
       throw std::invalid_argument(std::string(call) + ": q_start[" + std::to_string(i) + "] is not a finite number");
     const double d = std::abs(q_start[i] - q_actual[i]);
-    if (d > kStartJointTolerance)
+    if (d > kStartJointTolerance + moved.joint_travel)
       throw MotionException(std::string(call) + ": q_start[" + std::to_string(i) + "] = " + fmt("%.6f", q_start[i]) +
                             " rad is " + fmt("%.6f", d) + " rad from the robot's position " +
                             fmt("%.6f", q_actual[i]) + " (more than 1e-3 rad); pass the current state, "
@@ -49,12 +49,13 @@ void requireStartJoints(const char* call, const std::array<double, 7>& q_start, 
   }
 }
 
-void requireStartPose(const char* call, const std::array<double, 16>& start, const std::array<double, 16>& actual) {
+void requireStartPose(const char* call, const std::array<double, 16>& start, const std::array<double, 16>& actual,
+                      const StandstillWait& moved) {
   const Eigen::Isometry3d a = planning::poseFromRowMajor(actual, "the robot's TCP pose");
   const Eigen::Isometry3d s = planning::poseFromRowMajor(start, (std::string(call) + " start pose").c_str());
   const double distance = (s.translation() - a.translation()).norm();
   const double angle = Eigen::AngleAxisd(a.linear().transpose() * s.linear()).angle();
-  if (distance > kStartPositionTolerance || angle > kStartRotationTolerance)
+  if (distance > kStartPositionTolerance + moved.tcp_travel || angle > kStartRotationTolerance + moved.rotation_travel)
     throw MotionException(std::string(call) + ": the start pose is " + fmt("%.2f", distance * 1000) + " mm and " +
                           fmt("%.4f", angle) + " rad from the robot's TCP pose (at most 1 mm and 1e-3 rad); pass the "
                           "current state, e.g. start.pos = robot.receiveRobotState().toolTobase_pos_m");
@@ -107,8 +108,8 @@ JointSweep sweepTrajectory(const char* call, const planning::CartesianTrajectory
       const double v = (q[i] - q_prev[i]) / kDt, a = (v - v_prev[i]) / kDt, j = (a - a_prev[i]) / kDt;
       const double before = sweep.worst();
       sweep.velocity_ratio = std::max(sweep.velocity_ratio, std::abs(v) / (spec.dq_max[i] * speed_ratio));
-      sweep.acceleration_ratio = std::max(sweep.acceleration_ratio, std::abs(a) / spec.ddq_max[i]);
-      sweep.jerk_ratio = std::max(sweep.jerk_ratio, std::abs(j) / spec.jerk_max[i]);
+      sweep.acceleration_ratio = std::max(sweep.acceleration_ratio, std::abs(a) / (spec.ddq_max[i] * kFullSpeedShare));
+      sweep.jerk_ratio = std::max(sweep.jerk_ratio, std::abs(j) / (spec.jerk_max[i] * kFullSpeedShare));
       if (sweep.worst() > before) {
         const Eigen::Vector3d p = sample.pose.translation();
         sweep.worst_time = k * kDt;

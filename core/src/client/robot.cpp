@@ -5,9 +5,12 @@
 // Motion calls (startMove, stopMove, Control) are in robot_control.cpp.
 #include <xmate/robot.h>
 
+#include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "client/connection.h"
+#include "client/refusal_cause.h"
 #include "client/robot_responses.h"
 #include "model/parameter_checks.h"
 #include "model/robot_spec.h"
@@ -28,14 +31,33 @@ int responseMs(const client::Connection& c) { return c.options().timeouts.respon
 int motionResponseMs(const client::Connection& c) { return c.options().timeouts.motion_response_ms; }
 
 // A setter's request: the arguments were checked (`problem`: std::invalid_argument, nothing sent),
-// then connect if needed, send, and turn a refusal into the call's exception (`hint`: why the
-// controller may refuse it).
+// then connect if needed, send, and turn a refusal into the call's exception, naming the cause that
+// holds (refusal_cause.h; `cause` first, for a cause only this setting has).
 template <class Request>
 void sendSetting(client::Connection& c, const std::string& problem, const char* call, const Request& request,
-                 const char* hint = "") {
+                 const std::function<std::string()>& cause = {}) {
   require(problem);
   c.ensureOpen();
-  requireSetterSuccess(call, c.request(call, request, responseMs(c)), hint);
+  requireSetterSuccess(call, c.request(call, request, responseMs(c)), client::RefusalCause([&c, &cause] {
+                         std::string own = cause ? cause() : std::string();
+                         return own.empty() ? client::refusalCause(c, client::Request::kSetting) : own;
+                       }));
+}
+
+// The cause a safety box is refused for that only it has: the TCP outside it (the newest state's).
+std::string tcpOutsideBox(client::Connection& c, const std::array<double, 3>& size, const std::array<double, 16>& frame) {
+  RCI::robot::RobotState s;
+  if (!c.latestState(s)) return "";
+  const auto& p = s.toolTobase_pos_m;
+  const double d[3] = {p[3] - frame[3], p[7] - frame[7], p[11] - frame[11]};
+  for (int axis = 0; axis < 3; ++axis) {
+    const double local = frame[size_t(axis)] * d[0] + frame[size_t(4 + axis)] * d[1] + frame[size_t(8 + axis)] * d[2];
+    if (std::abs(local) > 0.5 * size[size_t(axis)])
+      return "; the TCP is outside the requested box (" + std::string(1, "xyz"[axis]) + " = " + std::to_string(local) +
+             " m from its centre, the box reaches " + std::to_string(0.5 * size[size_t(axis)]) +
+             " m): move the TCP inside first or enlarge the box";
+  }
+  return "";
 }
 
 }  // namespace
@@ -75,7 +97,13 @@ void Robot::setCartesianLimit(const std::array<double, 3>& size, const std::arra
   m.size = size;
   m.frame = frame;
   m.active = active;
-  sendSetting(*connection_, model::checkCartesianLimit(size, frame), "setCartesianLimit", m);
+  sendSetting(*connection_, model::checkCartesianLimit(size, frame), "setCartesianLimit", m,
+              [&] { return active ? tcpOutsideBox(*connection_, size, frame) : std::string(); });
+  connection_->updateRemembered([&](client::Connection::Remembered& r) {
+    r.limits.box_active = active;
+    r.limits.box_size = size;
+    r.limits.box_frame = frame;
+  });
 }
 
 void Robot::setJointImpedance(const std::array<double, 7>& K_theta) {
@@ -93,7 +121,7 @@ void Robot::setCartesianImpedance(const std::array<double, 6>& K_x) {
 void Robot::setCoor(const std::array<double, 16>& F_T_EE) {
   proto::SetCoorRequest m;
   m.flange_to_tool = F_T_EE;
-  sendSetting(*connection_, model::checkToolFrame(F_T_EE), "setCoor", m, " (the tool cannot change during a motion)");
+  sendSetting(*connection_, model::checkToolFrame(F_T_EE), "setCoor", m);
   connection_->updateRemembered([&](client::Connection::Remembered& r) { r.tool = F_T_EE; });
 }
 
@@ -102,8 +130,7 @@ void Robot::setLoad(double mass, const std::array<double, 3>& center, const std:
   m.mass = mass;
   m.center = center;
   m.inertia = inertia;
-  sendSetting(*connection_, model::checkLoad(specOf(*connection_), mass, center, inertia), "setLoad", m,
-              " (the load cannot change during a motion)");
+  sendSetting(*connection_, model::checkLoad(specOf(*connection_), mass, center, inertia), "setLoad", m);
   connection_->updateRemembered([&](client::Connection::Remembered& r) {
     r.load_mass = mass;
     r.load_center = center;
@@ -131,7 +158,9 @@ bool Robot::setMotorPower(int state) {
   proto::SetMotorPowerRequest m;
   m.state = uint8_t(state);
   requireSetterSuccess("setMotorPower", connection_->request("setMotorPower", m, motionResponseMs(*connection_)),
-                       state == 1 ? " (release an emergency stop first)" : "");
+                       client::RefusalCause([this] {
+                         return client::refusalCause(*connection_, client::Request::kMotorPower);
+                       }));
   return true;
 }
 
@@ -171,6 +200,14 @@ void Robot::setJointLimit(const std::array<double, 7>& upper_deg, const std::arr
   m.lower = lower_deg;
   m.auto_limit = auto_limit;
   sendSetting(*connection_, model::checkSoftLimits(specOf(*connection_), upper_deg, lower_deg), "setJointLimit", m);
+  connection_->updateRemembered([&](client::Connection::Remembered& r) {
+    constexpr double kRad = 3.14159265358979323846 / 180.0;
+    r.limits.has_soft_limits = true;
+    for (size_t i = 0; i < 7; ++i) {
+      r.limits.soft_upper[i] = upper_deg[i] * kRad;
+      r.limits.soft_lower[i] = lower_deg[i] * kRad;
+    }
+  });
 }
 
 void Robot::setFcCoor(const std::array<double, 16>& frame, int fc_type) {
@@ -183,11 +220,14 @@ void Robot::setFcCoor(const std::array<double, 16>& frame, int fc_type) {
 void Robot::startDrag(int drag_space, int drag_type) {
   require(model::checkDrag(drag_space, drag_type));
   connection_->ensureOpen();
+  connection_->awaitStandstill("startDrag");
   proto::StartDragRequest m;
   m.space = uint8_t(drag_space - 1);  // API 1 joint, 2 Cartesian -> wire 0, 1
   m.type = uint8_t(drag_type - 1);    // API 1 translation, 2 rotation, 3 free -> wire 0..2
   requireSetterSuccess("startDrag", connection_->request("startDrag", m, motionResponseMs(*connection_)),
-                       "; drag needs the motors on and no motion running");
+                       client::RefusalCause([this] {
+                         return client::refusalCause(*connection_, client::Request::kHandGuiding);
+                       }));
 }
 
 void Robot::stopDrag() {

@@ -8,8 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "client/clocked_control.h"
 #include "client/connection.h"
 #include "client/error_bits.h"
+#include "client/refusal_cause.h"
 #include "client/robot_responses.h"
 
 namespace xmate {
@@ -92,6 +94,24 @@ std::string stallNote(const client::ControlResult& r) {
   return buf;
 }
 
+// States in a row the callback missed that are worth naming when the controller stopped the motion
+// (a single lost state is routine on a PC without a real-time kernel).
+constexpr uint64_t kLossNoteStates = 5;
+
+// Explains states lost on the way during the run, when no stall of the client's loop explains them.
+std::string lossNote(const client::ControlResult& r) {
+  if (r.longest_miss < kLossNoteStates || r.longest_stall_ms >= kStallNoteMs) return "";
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                " %llu states in a row from the controller never reached this PC (until message_id %llu; %llu "
+                "missed in the whole motion), so no command was sent for them; the controller stops a motion after "
+                "about 15 missing commands in a row. Check the network between this PC and the controller (a direct "
+                "cable, no other traffic); `rci-cli bench loop` counts lost states.",
+                static_cast<unsigned long long>(r.longest_miss), static_cast<unsigned long long>(r.miss_message_id),
+                static_cast<unsigned long long>(r.states_missed));
+  return buf;
+}
+
 }  // namespace
 
 void Robot::startMove(CM controller_mode, MM motion_mode) {
@@ -102,13 +122,15 @@ void Robot::startMove(CM controller_mode, MM motion_mode) {
                                 ") is not supported; use (kJointPosition or kJointImpedance, kJointPosition), "
                                 "(kCartesianPosition or kCartesianImpedance, kCartesianPosition) or (kTorque, kIdle)");
   connection_->ensureOpen();
+  connection_->awaitStandstill("startMove");
   protocol::StartMoveRequestMsg m;
   m.controller_mode = uint8_t(controller_mode);
   m.motion_mode = uint8_t(motion_mode);
   connection_->beginMotionHold(kind);
   try {
     client::requireStartMoveSuccess(
-        connection_->request("startMove", m, connection_->options().timeouts.motion_response_ms));
+        connection_->request("startMove", m, connection_->options().timeouts.motion_response_ms),
+        [this] { return client::refusalCause(*connection_, client::Request::kMotion); });
   } catch (...) {
     connection_->endMotionHold();
     throw;
@@ -147,7 +169,7 @@ void stopQuietly(Robot& robot) {
     case ControlOutcome::kFinished: break;
     case ControlOutcome::kControllerError:
       throw ControlException(call + ": the controller stopped the motion " + where(s, r.log) + " with error bits " +
-                                 client::describeErrors(s.errors) + "." + stallNote(r) +
+                                 client::describeErrors(s.errors) + "." + stallNote(r) + lossNote(r) +
                                  " Then call automaticErrorRecovery().",
                              s.errors, r.log);
     case ControlOutcome::kEndedByController:
@@ -186,7 +208,8 @@ void stopQuietly(Robot& robot) {
 }
 
 template <class Callback>
-void control(Robot& robot, client::Connection& connection, ControlKind kind, const Callback& callback) {
+void control(Robot& robot, client::Connection& connection, ControlKind kind, const Callback& callback,
+             client::MissedStates missed) {
   const std::string call = std::string("Control(") + client::toString(kind) + ")";
   if (!callback) throw std::invalid_argument(call + ": the callback is empty");
   const auto remembered = connection.remembered();  // a copy: other threads may start or stop moves
@@ -200,14 +223,31 @@ void control(Robot& robot, client::Connection& connection, ControlKind kind, con
   connection.ensureOpen();
   // One Control() per startMove().
   connection.updateRemembered([](client::Connection::Remembered& r) { r.move_armed = false; });
-  const client::ControlResult result = connection.runControl(callback);
+  const client::ControlResult result = connection.runControl(callback, missed);
   if (result.outcome != ControlOutcome::kFinished) raise(robot, result);
 }
 
 }  // namespace
 
-void Robot::Control(JointControl callback) { control(*this, *connection_, ControlKind::kJoint, callback); }
-void Robot::Control(CartesianControl callback) { control(*this, *connection_, ControlKind::kCartesian, callback); }
-void Robot::Control(TorqueControl callback) { control(*this, *connection_, ControlKind::kTorque, callback); }
+void Robot::Control(JointControl callback) {
+  control(*this, *connection_, ControlKind::kJoint, callback, client::MissedStates::kReplay);
+}
+void Robot::Control(CartesianControl callback) {
+  control(*this, *connection_, ControlKind::kCartesian, callback, client::MissedStates::kReplay);
+}
+void Robot::Control(TorqueControl callback) {
+  control(*this, *connection_, ControlKind::kTorque, callback, client::MissedStates::kReplay);
+}
 
 }  // namespace xmate
+
+namespace xmate::client {
+
+void controlByMessageId(Robot& robot, const JointControl& callback) {
+  control(robot, robot.connection(), ControlKind::kJoint, callback, MissedStates::kSkip);
+}
+void controlByMessageId(Robot& robot, const CartesianControl& callback) {
+  control(robot, robot.connection(), ControlKind::kCartesian, callback, MissedStates::kSkip);
+}
+
+}  // namespace xmate::client

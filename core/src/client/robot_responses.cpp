@@ -14,7 +14,7 @@ namespace {
                           std::to_string(value) + "; it speaks another protocol version");
 }
 
-[[noreturn]] void refused(const char* call, const char* status, const char* hint) {
+[[noreturn]] void refused(const char* call, const char* status, const std::string& hint) {
   throw CommandException(std::string(call) + ": the controller refused: " + status + hint);
 }
 
@@ -35,17 +35,23 @@ void requireSetterSuccess(const char* call, const std::vector<uint8_t>& payload,
   if (status != protocol::SetterStatus::kSuccess) refused(call, protocol::toString(status), hint);
 }
 
-void requireStartMoveSuccess(const std::vector<uint8_t>& payload) {
+void requireSetterSuccess(const char* call, const std::vector<uint8_t>& payload, const RefusalCause& not_possible) {
+  const uint8_t value = byteValue(call, payload);
+  if (value > uint8_t(protocol::SetterStatus::kInvalidArgument)) unknownStatus(call, value);
+  const auto status = protocol::SetterStatus(value);
+  if (status == protocol::SetterStatus::kSuccess) return;
+  refused(call, protocol::toString(status), status == protocol::SetterStatus::kNotPossible ? not_possible() : "");
+}
+
+void requireStartMoveSuccess(const std::vector<uint8_t>& payload, const RefusalCause& not_possible) {
   const uint8_t value = byteValue("startMove", payload);
   if (value > uint8_t(protocol::StartMoveStatus::kAborted)) unknownStatus("startMove", value);
   using S = protocol::StartMoveStatus;
   const auto status = S(value);
   if (status == S::kSuccess || status == S::kMotionStarted) return;
-  const char* hint = "";
+  std::string hint;
   switch (status) {
-    case S::kNotPossible:
-      hint = "; power the motors on (setMotorPower(1)), stop dragging (stopDrag()) and release a guard stop";
-      break;
+    case S::kNotPossible: hint = not_possible(); break;
     case S::kReflexAborted: hint = "; error bits are set: call automaticErrorRecovery() first"; break;
     case S::kEmergencyAborted: hint = "; release the emergency stop, then automaticErrorRecovery()"; break;
     case S::kInvalidArgument:

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,9 +18,13 @@ uint8_t byteValue(const char* call, const std::vector<uint8_t>& payload);
 // Setter responses: returns if the status is success; throws CommandException("<call>: the
 // controller refused: <status text><hint>") for a refusal and ProtocolException for an unknown status.
 void requireSetterSuccess(const char* call, const std::vector<uint8_t>& payload, const char* hint = "");
+// The same, with the hint for a kNotPossible refusal found only when it happens (refusal_cause.h).
+using RefusalCause = std::function<std::string()>;
+void requireSetterSuccess(const char* call, const std::vector<uint8_t>& payload, const RefusalCause& not_possible);
 
-// StartMove: success and "motion started" are both accepted.
-void requireStartMoveSuccess(const std::vector<uint8_t>& payload);
+// StartMove: success and "motion started" are both accepted; not_possible gives the cause of a
+// kNotPossible refusal.
+void requireStartMoveSuccess(const std::vector<uint8_t>& payload, const RefusalCause& not_possible);
 void requireStopMoveSuccess(const std::vector<uint8_t>& payload);
 void requireRecoverySuccess(const std::vector<uint8_t>& payload);
 

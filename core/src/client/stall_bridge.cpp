@@ -37,9 +37,12 @@ StallBridge::Vec StallBridge::bridge(uint64_t message_id, const Vec& plan, const
     if (!seeded_) ++stalls_;
     seeded_ = false;
   } else {
-    Vec plan_acceleration{};
-    for (int i = 0; i < dims_; ++i) plan_acceleration[i] = (plan[i] - 2 * plan_1[i] + plan_2[i]) / (kDt * kDt);
-    step(plan_acceleration);
+    Vec plan_velocity{}, plan_acceleration{};
+    for (int i = 0; i < dims_; ++i) {
+      plan_acceleration[i] = (plan[i] - 2 * plan_1[i] + plan_2[i]) / (kDt * kDt);
+      plan_velocity[i] = (plan[i] - plan_1[i]) / kDt + 0.5 * kDt * plan_acceleration[i];
+    }
+    step(plan_velocity, plan_acceleration);
     settleIfDone();
   }
   Vec out = plan;
@@ -83,14 +86,40 @@ void StallBridge::limitGroups(Vec& v, const Vec& limit) const {
   }
 }
 
-// One cycle of the tracker: jerk = -(3p e'' + 3p^2 e' + p^3 e) within the reserve, then the
-// command's acceleration (plan's + correction's) within the limit. The correction is integrated
-// exactly for the jerk held over the cycle (a cubic piece), so its divided differences -- what the
-// controller checks -- are those of a smooth curve, also right after the extrapolated start.
-void StallBridge::step(const Vec& plan_acceleration) {
-  Vec jerk{};
-  for (int i = 0; i < dims_; ++i)
+// The velocity guard: where a group's total velocity (plan + correction) and its correction's
+// acceleration point the same way, that acceleration is held to sqrt(2 j (v_max - |v|)) -- what the
+// jerk reserve j can still take back before the velocity reaches v_max -- by lowering the
+// correction's jerk (the jerk reserve still bounds it).
+void StallBridge::guardVelocity(const Vec& velocity, Vec& jerk) const {
+  for (int g = 0; g < dims_; ++g) {
+    if (limits_.velocity[g] <= 0) continue;
+    double speed2 = 0, along = 0;
+    for (int i = 0; i < dims_; ++i)
+      if (limits_.group[i] == g) speed2 += velocity[i] * velocity[i];
+    const double speed = std::sqrt(speed2);
+    if (speed <= 0) continue;
+    for (int i = 0; i < dims_; ++i)
+      if (limits_.group[i] == g) along += (dde_[i] + jerk[i] * kDt) * velocity[i] / speed;
+    const double room = std::max(0.0, limits_.velocity[g] - speed);
+    const double allowed = std::sqrt(2.0 * limits_.jerk_reserve[g] * room);
+    if (along <= allowed) continue;
+    for (int i = 0; i < dims_; ++i)
+      if (limits_.group[i] == g) jerk[i] -= (along - allowed) / kDt * velocity[i] / speed;
+  }
+}
+
+// One cycle of the tracker: jerk = -(3p e'' + 3p^2 e' + p^3 e), guarded against the velocity
+// limit, within the reserve; then the command's acceleration (plan's + correction's) within the
+// limit. The correction is integrated exactly for the jerk held over the cycle (a cubic piece), so
+// its divided differences -- what the controller checks -- are those of a smooth curve, also right
+// after the extrapolated start.
+void StallBridge::step(const Vec& plan_velocity, const Vec& plan_acceleration) {
+  Vec jerk{}, velocity{};
+  for (int i = 0; i < dims_; ++i) {
     jerk[i] = -(3 * kPole * dde_[i] + 3 * kPole * kPole * de_[i] + kPole * kPole * kPole * e_[i]);
+    velocity[i] = plan_velocity[i] + de_[i];
+  }
+  guardVelocity(velocity, jerk);
   limitGroups(jerk, limits_.jerk_reserve);
   Vec total{};
   for (int i = 0; i < dims_; ++i) total[i] = dde_[i] + jerk[i] * kDt + plan_acceleration[i];
@@ -125,6 +154,7 @@ StallBridge::Limits jointBridgeLimits(const model::RobotSpec& spec, double share
   const double reserve = std::max(1.0 - share, 0.1);
   StallBridge::Limits limits;
   for (int i = 0; i < spec.dof; ++i) {
+    limits.velocity[i] = spec.dq_max[i];
     limits.acceleration[i] = spec.ddq_max[i];
     limits.jerk_reserve[i] = reserve * spec.jerk_max[i];
   }
@@ -137,11 +167,14 @@ StallBridge::Limits cartesianBridgeLimits(double share) {
   const model::CartesianLimits& planner = model::plannerCartesianLimits();
   StallBridge::Limits limits;
   for (int i = 0; i < 3; ++i) {
+    limits.velocity[i] = controller.v_trans;
+    limits.velocity[i + 3] = controller.v_rot;
     limits.acceleration[i] = controller.a_trans;
     limits.jerk_reserve[i] = reserve * planner.j_trans;
     limits.acceleration[i + 3] = controller.a_rot;
     limits.jerk_reserve[i + 3] = reserve * planner.j_rot;
   }
+  limits.velocity[6] = controller.v_elbow;
   limits.acceleration[6] = controller.a_elbow;
   limits.jerk_reserve[6] = reserve * planner.j_elbow;
   limits.group = {0, 0, 0, 3, 3, 3, 6};

@@ -6,7 +6,9 @@
 // target. The bridge starts the first command after the gap where that extrapolation is (same
 // position, velocity and acceleration), then brings the command back onto the plan with a
 // third-order tracker whose jerk is limited to a reserve and whose total acceleration stays within
-// the limits -- a rate limiter against the controller's own command (docs/reliability.md).
+// the limits -- a rate limiter against the controller's own command (docs/reliability.md). The
+// total velocity is guarded too: the acceleration towards the velocity limit is held to what the
+// jerk reserve can still brake before reaching it.
 // Allocation-free and lock-free: made for the real-time callbacks of MOVEJ/MOVEL/MOVEC and the
 // teach executor.
 #pragma once
@@ -30,6 +32,7 @@ class StallBridge {
   // must not exceed, and the jerk the correction may add on top of the plan's own (the plan's
   // reserve), both read at the group's first coordinate.
   struct Limits {
+    Vec velocity{};  // 0: not guarded
     Vec acceleration{};
     Vec jerk_reserve{};
     std::array<int, kMaxDims> group{0, 1, 2, 3, 4, 5, 6};  // the first coordinate of each one's group
@@ -63,7 +66,8 @@ class StallBridge {
   Vec bridge(uint64_t message_id, const Vec& plan, const Vec& plan_1, const Vec& plan_2);
   Vec remember(uint64_t message_id, const Vec& command);
   void startFromExtrapolation(uint64_t message_id, const Vec& plan, const Vec& plan_1, const Vec& plan_2);
-  void step(const Vec& plan_acceleration);
+  void step(const Vec& plan_velocity, const Vec& plan_acceleration);
+  void guardVelocity(const Vec& velocity, Vec& jerk) const;
   void limitGroups(Vec& v, const Vec& limit) const;
   void settleIfDone();
 
@@ -81,10 +85,11 @@ class StallBridge {
 };
 
 // Limits for joint commands of a plan that uses `share` of the model's rated limits: the rated
-// accelerations, and the unused share of the rated jerks (at least 10 %) as the reserve.
+// velocities and accelerations, and the unused share of the rated jerks (at least 10 %) as the reserve.
 StallBridge::Limits jointBridgeLimits(const model::RobotSpec& spec, double share);
 // Limits for Cartesian commands as cartesianCoordinates() lays them out (translation, rotation,
-// arm angle): the controller's Cartesian accelerations, the unused share of the planner's jerks.
+// arm angle): the controller's Cartesian velocities and accelerations, the unused share of the
+// planner's jerks.
 StallBridge::Limits cartesianBridgeLimits(double share);
 
 // A Cartesian command as bridge coordinates: the position (m), the rotation vector of

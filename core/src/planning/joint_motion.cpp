@@ -42,6 +42,23 @@ void requireInRange(const std::array<double, 7>& q, const model::RobotSpec& spec
   }
 }
 
+// A start may lie a little beyond a joint's range -- where a stop ramp or the operator's hand can
+// leave a joint -- since every joint moves in a straight line towards the goal, which is inside.
+constexpr double kStartBeyondRange = 0.2;  // rad
+
+void requireUsableStart(const std::array<double, 7>& q, const model::RobotSpec& spec) {
+  for (int i = 0; i < spec.dof; ++i) {
+    if (std::isfinite(q[i]) && q[i] >= spec.q_min[i] - kStartBeyondRange && q[i] <= spec.q_max[i] + kStartBeyondRange)
+      continue;
+    std::ostringstream msg;
+    msg << "JointMotionGenerator: q_start[" << i << "] = " << q[i] << " rad is not a finite value within 0.2 rad of joint "
+        << i + 1 << "'s range [" << spec.q_min[i] << ", " << spec.q_max[i] << "] rad (" << spec.q_min[i] * kRadToDeg
+        << " .. " << spec.q_max[i] * kRadToDeg << " deg) of the " << spec.display_name
+        << "; pass the robot's joints (RobotState::q)";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
 void requirePlanned(bool planned) {
   if (!planned)
     throw MotionException(
@@ -67,7 +84,7 @@ void JointMotionGenerator::calculateSynchronizedValues_joint(const std::array<do
   if (planned_ && q_start == q_start_) return;  // vendor programs call this every cycle
 
   const model::RobotSpec& spec = model::robotSpec(type_);
-  requireInRange(q_start, spec, "q_start");
+  requireUsableStart(q_start, spec);
   const planning::JointLine line = planning::planJointLine(spec, q_start, q_goal_, speed_ratio_);
   profile_ = line.profile;
   delta_ = line.delta;

@@ -212,7 +212,8 @@ class Executor {
   // A PATH's timing streamed in joint position mode on an xMate (executor_motion.cpp) or as axis
   // corrections on a KUKA (executor_rsi.cpp), each cycle's measured joints into `recording`; both
   // fill the report's motion fields as the other motions do.
-  void streamPath(const PathTiming& timing, PathRecording& recording, InstructionReport& report);
+  void streamPath(const Program& program, const JointPath& path, const PathTiming& timing, PathRecording& recording,
+                  InstructionReport& report);
   void streamRsiPath(const Program& program, const PathTiming& timing, PathRecording& recording,
                      InstructionReport& report);
   // Throws MotionException naming the path time when the RSI session cannot follow the timing

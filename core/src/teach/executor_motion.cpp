@@ -8,14 +8,15 @@
 // on the real-time thread: they touch only atomics (relaxed loads/stores) and locals, and allocate
 // nothing.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
-#include <thread>
 
 #include <xmate/exception.h>
 #include <xmate/joint_motion.h>
 
+#include "client/clocked_control.h"
+#include "client/connection.h"
+#include "client/limit_check.h"
 #include "client/move_check.h"
 #include "client/stall_bridge.h"
 #include "model/robot_spec.h"
@@ -42,7 +43,6 @@ constexpr double kDt = 1e-3;
 // and this slow: far below what an operator or a next instruction notices (0.003 deg), well above
 // what a real arm's encoders and friction leave at standstill.
 constexpr double kSettleSpeed = 2e-3;      // rad/s: "at rest" on the xMate also means this slow
-constexpr int kStartRetryMs = 3000;
 
 // Plan time driven by the controller's message_id and the time scaling. As client/move.cpp's
 // MotionClock it starts at the first state reporting robot_mode kMove (earlier states were sent
@@ -89,20 +89,16 @@ double tcpError(const RobotState& s) {
   return std::sqrt(std::pow(c[3] - m[3], 2) + std::pow(c[7] - m[7], 2) + std::pow(c[11] - m[11], 2));
 }
 
-// startMove, retried while the controller is still stopping from the previous motion.
-void startMoveWhenReady(Robot& robot, CM controller, MM motion) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(kStartRetryMs);
-  for (;;) {
-    try {
-      robot.startMove(controller, motion);
-      return;
-    } catch (const CommandException&) {
-      if (std::chrono::steady_clock::now() > end) throw;
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-  }
+// The limits the robot was given through this client (the soft limits and safety box sent with
+// setJointLimit / setCartesianLimit, client/limit_check.h), from where the arm is -- checked also when
+// the caller's pre-flight did not know them.
+client::LimitWatch robotLimits(Robot& robot, const model::ArmKinematics& model, const std::array<double, 7>& q_start) {
+  return client::LimitWatch(model.spec(), robot.connection().remembered().limits, q_start, &model);
 }
 
+void requireWithinLimits(const std::string& problem) {
+  if (!problem.empty()) throw MotionException(problem + "; re-teach it within the limits, or change the limits");
+}
 
 bool atRest(const RobotState& s, int dof) {
   if (jointError(s, dof) >= kSettleTolerance) return false;
@@ -197,8 +193,8 @@ bool Executor::streamJointPlan(Plan& plan, Clock& clock, double share, OnState o
   client::StallBridge::Vec last = plan.at(0);
   bool stopped = false;
   auto planAt = [&](double time) { return plan.at(time); };
-  startMoveWhenReady(*robot_, CM::kJointPosition, MM::kJointPosition);
-  robot_->Control(JointControl([&](RobotState s) -> JointPositions {
+  robot_->startMove(CM::kJointPosition, MM::kJointPosition);
+  client::controlByMessageId(*robot_, JointControl([&](RobotState s) -> JointPositions {
     const bool starting = clock.calls == 0;
     limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, dof, 1.0);
     const double t = clock.advance(s, scalingTarget(clock.scaling));
@@ -269,6 +265,8 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
     if (rc != XmateModel::kIkOk)
       throw MotionException(std::string("the target pose cannot be reached: ") + client::ikFailureText(rc) +
                             " (IK code " + std::to_string(rc) + ")");
+    client::LimitWatch watch = robotLimits(*robot_, model, state.q);
+    requireWithinLimits(client::checkJointLine(watch, state.q, goal, dof));
     JointMotionGenerator generator(share, goal, robot_->type());
     JointGoalPlan plan{generator, state.q, goal, dof};
     plan.startFrom(state.q);
@@ -278,13 +276,16 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
     // Planned once the controller accepted the motion, from where the arm is then: the previous
     // motion's stop may have taken it a little further while startMove was retried. Until Control()
     // the client answers every state with "hold still".
-    startMoveWhenReady(*robot_, CM::kCartesianPosition, MM::kCartesianPosition);
+    robot_->startMove(CM::kCartesianPosition, MM::kCartesianPosition);
     planning::CartesianPath path;
     planning::CartesianTrajectory trajectory;
     try {
       const std::array<double, 7> q_now = robot_->receiveRobotState().q;
       path = cartesianPath(in, model, q_now);
-      trajectory = client::planWithinJointLimits(typeName(in.type), path, share, model, q_now);
+      client::JointSamples joints;
+      trajectory = client::planWithinJointLimits(typeName(in.type), path, share, model, q_now, &joints);
+      client::LimitWatch watch = robotLimits(*robot_, model, q_now);
+      requireWithinLimits(client::checkJointPath(watch, joints));
     } catch (...) {
       endStartedMotion(*robot_);
       throw;
@@ -303,7 +304,7 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
         const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, time);
         return client::cartesianCoordinates(sample.pose, sample.psi, reference);
       };
-      robot_->Control(CartesianControl([&](RobotState s) -> CartesianPose {
+      client::controlByMessageId(*robot_, CartesianControl([&](RobotState s) -> CartesianPose {
         track(s);
         const bool starting = clock.calls == 0;
         limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, 7, kCartesianBrakingShare);
@@ -332,8 +333,12 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
   finishMotion(*robot_, dof, clock.elapsed(), tracking, stopped, report);
 }
 
-void Executor::streamPath(const PathTiming& timing, PathRecording& recording, InstructionReport& report) {
+void Executor::streamPath(const Program& program, const JointPath& path, const PathTiming& timing,
+                          PathRecording& recording, InstructionReport& report) {
   const model::RobotSpec& spec = model::robotSpec(robot_->type());
+  const model::ArmKinematics model = motionModel(program, spec, robot_->toolFrame());
+  client::LimitWatch watch = robotLimits(*robot_, model, robot_->receiveRobotState().q);
+  requireWithinLimits(client::checkJointPath(watch, path.q));
   ScaledClock clock(override_.load(), safeScalingRate(kPathLimitShare, accelOverVelocity(true, spec)));
   Tracking tracking{spec.dof};
   TimingPlan plan{timing};

@@ -74,7 +74,7 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
   fraction_span_ = 1 - fraction_from_;
 
   PathRecording recording(timing);
-  if (robot_) streamPath(timing, recording, report);
+  if (robot_) streamPath(program, in.path, timing, recording, report);
   else streamRsiPath(program, timing, recording, report);
   if (recording.measured().empty()) return;
   const model::ArmKinematics model = motionModel(program, spec, port_->toolFrame());
