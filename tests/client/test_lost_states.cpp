@@ -4,11 +4,14 @@
 // several motions run), and MOVEJ, MOVEL and MOVEC at speed 1.0, the teach executor (MOVEJ and
 // PATH) and the vendor manual's programs -- callbacks that keep time with `time += 0.001` per call
 // -- all complete without an error bit. Robot::Control calls the callback once for every missed
-// message_id, in order, before it answers the newest state.
+// message_id, in order, before it answers the newest state. A stop after a stall of the machine
+// (the client's thread not run for 15 ms or more) is repeated, within a budget (MachineStalls).
 #include <QtTest>
 
 #include <atomic>
 #include <cmath>
+#include <functional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -58,6 +61,25 @@ QString moveWithLoss(sim::Server& server, int at_ms, int run, Move&& move) {
     move();
   } catch (const std::exception& e) {
     return what + e.what();
+  }
+  return {};
+}
+
+// moveWithLoss, repeated from where it began after a stop the machine caused (MachineStalls).
+template <class Move>
+QString moveWithLossExcused(Robot& robot, sim::Server& server, MachineStalls& stalls, int at_ms, int run, Move&& move) {
+  return QString::fromStdString(excusingMachineStalls(robot, stalls, 0, [&] {
+    return moveWithLoss(server, at_ms, run, move).toStdString();
+  }));
+}
+
+// What `call` threw, or "" (for excusingMachineStalls).
+template <class Call>
+std::string failureOf(Call&& call) {
+  try {
+    call();
+  } catch (const std::exception& e) {
+    return e.what();
   }
   return {};
 }
@@ -175,6 +197,7 @@ class TestLostStates : public QObject {
   void manualProgramsThroughLostStates();
   void executorThroughLostStates();
   void randomLossAtFullSpeed();
+  void heavyLossOnTheLockStepClock();
 };
 
 void TestLostStates::controlCallsTheCallbackForEveryMissedState() {
@@ -206,13 +229,15 @@ void TestLostStates::movejAtFullSpeedThroughLostStates() {
   auto robot = robotFor(*server);
   const std::array<double, 7> home = robot->receiveRobotState().q;
   const std::array<double, 7> away = awayFrom(home);
+  MachineStalls stalls;
   bool forth = true;
   for (int at : kLossPoints)
     for (int run : kLossRuns) {
       const std::array<double, 7>& target = forth ? away : home;
-      const QString failure = moveWithLoss(*server, at, run, [&] {
+      const QString failure = moveWithLossExcused(*robot, *server, stalls, at, run, [&] {
         MOVEJ(1.0, robot->receiveRobotState().q, target, *robot);
       });
+      SKIP_IF_THE_MACHINE_STALLED(stalls);
       QVERIFY2(failure.isEmpty(), qPrintable(failure));
       QVERIFY(settlesAt(*robot, target));
       forth = !forth;
@@ -229,13 +254,14 @@ void TestLostStates::movelAndMovecAtFullSpeedThroughLostStates() {
   away.pos[11] -= 0.15;
   mid.pos[3] += 0.15 * std::sqrt(0.5);
   mid.pos[11] -= 0.15 * (1 - std::sqrt(0.5));
+  MachineStalls stalls;
   bool forth = true;
   for (int at : kLossPoints)
     for (int run : kLossRuns) {
       cart_pos start, target = forth ? away : home;
       start.pos = robot->receiveRobotState().toolTobase_pos_m;
       const bool arc = (at + run) % 2 == 0;
-      const QString failure = moveWithLoss(*server, at, run, [&] {
+      const QString failure = moveWithLossExcused(*robot, *server, stalls, at, run, [&] {
         if (arc) {
           cart_pos via = mid;
           MOVEC(1.0, start, via, target, *robot);
@@ -243,6 +269,7 @@ void TestLostStates::movelAndMovecAtFullSpeedThroughLostStates() {
           MOVEL(1.0, start, target, *robot);
         }
       });
+      SKIP_IF_THE_MACHINE_STALLED(stalls);
       QVERIFY2(failure.isEmpty(), qPrintable((arc ? "MOVEC, " : "MOVEL, ") + failure));
       QVERIFY(eventually([&] {
         return distance(robot->receiveRobotState().toolTobase_pos_m, target.pos) < kPositionTolerance;
@@ -259,13 +286,17 @@ void TestLostStates::manualProgramsThroughLostStates() {
   goal[0] += 0.5;
   goal[3] -= 0.3;
   RandomLoss loss(*server, 11);
-  try {
-    manualJointProgram(*robot, goal);
-    manualJointProgram(*robot, home);
-    manualCartesianProgram(*robot, 10.0);  // one period: down and back up to rest
-    manualTorqueProgram(*robot, 1.0);
-  } catch (const std::exception& e) {
-    QFAIL(e.what());
+  MachineStalls stalls;
+  const std::function<void()> programs[] = {
+      [&] { manualJointProgram(*robot, goal); },
+      [&] { manualJointProgram(*robot, home); },
+      [&] { manualCartesianProgram(*robot, 10.0); },  // one period: down and back up to rest
+      [&] { manualTorqueProgram(*robot, 1.0); },
+  };
+  for (const auto& program : programs) {
+    const std::string failure = excusingMachineStalls(*robot, stalls, 0, [&] { return failureOf(program); });
+    SKIP_IF_THE_MACHINE_STALLED(stalls);
+    QVERIFY2(failure.empty(), failure.c_str());
   }
   QVERIFY(server->status().counters.states_lost > 0);
 }
@@ -276,16 +307,17 @@ void TestLostStates::executorThroughLostStates() {
   const std::array<double, 7> home = robot->receiveRobotState().q;
   const teach::Program program = pathProgram(home);
   teach::Executor executor;
+  MachineStalls stalls;
   for (int at : {3, 150, 500, 900})
     for (int run : kLossRuns) {
-      teach::RunReport report;
-      {
+      const std::string failure = excusingMachineStalls(*robot, stalls, 0, [&]() -> std::string {
         DuringMotion loss(*server, [&] { server->dropStates(run); }, at);
-        report = executor.run(*robot, program);
-      }
-      QVERIFY2(report.outcome == teach::RunState::kFinished,
-               qPrintable(QStringLiteral("%1 lost at %2 ms: %3").arg(run).arg(at).arg(
-                   QString::fromStdString(report.message))));
+        const teach::RunReport report = executor.run(*robot, program);
+        return report.outcome == teach::RunState::kFinished ? std::string() : report.message;
+      });
+      SKIP_IF_THE_MACHINE_STALLED(stalls);
+      QVERIFY2(failure.empty(), qPrintable(QStringLiteral("%1 lost at %2 ms: %3").arg(run).arg(at).arg(
+                                    QString::fromStdString(failure))));
     }
 }
 
@@ -295,16 +327,71 @@ void TestLostStates::randomLossAtFullSpeed() {
   const std::array<double, 7> home = robot->receiveRobotState().q;
   const std::array<double, 7> away = awayFrom(home);
   RandomLoss loss(*server, 7);
+  MachineStalls stalls;
   for (int k = 0; k < 10; ++k) {
     const std::array<double, 7>& target = k % 2 == 0 ? away : home;
-    try {
-      MOVEJ(1.0, robot->receiveRobotState().q, target, *robot);
-    } catch (const std::exception& e) {
-      QFAIL(qPrintable(QStringLiteral("MOVEJ %1: %2").arg(k).arg(e.what())));
-    }
+    const std::string failure = excusingMachineStalls(*robot, stalls, 0, [&] {
+      return failureOf([&] { MOVEJ(1.0, robot->receiveRobotState().q, target, *robot); });
+    });
+    SKIP_IF_THE_MACHINE_STALLED(stalls);
+    QVERIFY2(failure.empty(), qPrintable(QStringLiteral("MOVEJ %1: %2").arg(k).arg(failure.c_str())));
     QVERIFY(settlesAt(*robot, target));
   }
   QVERIFY(server->status().counters.states_lost > 0);
+}
+
+// Lock-step clock (states lost, never late), 5 % lost at random with pairs and a burst of 5 every
+// 300 ms: MOVEJ, MOVEL and MOVEC at full speed with the soak's strokes, over several loss patterns.
+// Every command stays within the limits, whatever the gaps fall on.
+void TestLostStates::heavyLossOnTheLockStepClock() {
+  SimOptions o;
+  o.lockstep_timeout_ms = 50;
+  auto server = startSim(o);
+  auto robot = robotFor(*server);
+  const std::array<double, 7> home = robot->receiveRobotState().q;
+  std::array<double, 7> away = home;
+  const std::array<double, 7> stroke{0.4, 0.25, -0.3, 0.35, 0.3, -0.3, 0.5};
+  for (int i = 0; i < 7; ++i) away[i] += stroke[i];
+  auto shifted = [](const cart_pos& from, double dx, double dy, double dz) {
+    cart_pos to = from;
+    to.pos[3] += dx;
+    to.pos[7] += dy;
+    to.pos[11] += dz;
+    return to;
+  };
+  auto here = [&] {
+    cart_pos p;
+    p.pos = robot->receiveRobotState().toolTobase_pos_m;
+    return p;
+  };
+  for (uint32_t seed = 1; seed <= 6; ++seed) {
+    sim::StateLoss loss;
+    loss.probability = 0.05;
+    loss.pair_share = 0.3;
+    loss.burst_states = 5;
+    loss.burst_every_ms = 300;
+    loss.seed = seed;
+    server->setStateLoss(loss);
+    for (int k = 0; k < 10; ++k) {
+      try {
+        MOVEJ(1.0, robot->receiveRobotState().q, k % 2 == 0 ? away : home, *robot);
+        if (k % 2 == 0) continue;
+        cart_pos start = here(), end = shifted(start, 0.08, 0.06, -0.1);
+        MOVEL(1.0, start, end, *robot);
+        start = here(), end = shifted(start, -0.08, -0.06, 0.1);
+        MOVEL(1.0, start, end, *robot);
+        start = here();
+        cart_pos via = shifted(start, 0.08, 0, -0.08);
+        end = shifted(start, 0, 0, -0.16);
+        MOVEC(1.0, start, via, end, *robot);
+        start = here(), via = shifted(start, 0.08, 0, 0.08), end = shifted(start, 0, 0, 0.16);
+        MOVEC(1.0, start, via, end, *robot);
+      } catch (const std::exception& e) {
+        QFAIL(qPrintable(QStringLiteral("loss pattern %1, stroke %2: %3").arg(seed).arg(k).arg(e.what())));
+      }
+    }
+  }
+  QVERIFY(server->status().counters.loss_bursts > 0);
 }
 
 QTEST_GUILESS_MAIN(TestLostStates)

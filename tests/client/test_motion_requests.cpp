@@ -112,9 +112,16 @@ void TestMotionRequests::standstillWatchFollowsTheStates() {
   s.dq_c[4] = 0.02;  // the commanded velocity counts too (the stop ramp)
   QVERIFY(!watch.update(s, 7).still);
   s.dq_c[4] = 0.0;
+  s.dq_m[2] = 0.005;  // settling: at rest, not yet still (a motion waits a little; the window enables it)
+  for (uint32_t k = 1; k < client::kStillStates; ++k) QVERIFY(!watch.update(s, 7).at_rest);
+  QVERIFY(watch.update(s, 7).at_rest);
+  QVERIFY(!watch.update(s, 7).still);
+  QVERIFY(client::settling(watch.update(s, 7), s));
+  QVERIFY(!client::stoppingOnItsOwn(watch.update(s, 7), s));
+  s.dq_m[2] = 0.0;
   for (uint32_t k = 1; k < client::kStillStates; ++k) QVERIFY(!watch.update(s, 7).still);
   QVERIFY(watch.update(s, 7).still);
-  QVERIFY(!client::stoppingOnItsOwn(watch.update(s, 7), s));
+  QVERIFY(!client::settling(watch.update(s, 7), s));
 }
 
 // After a reflex (a command the controller rejects), a collision, a guard stop, stopMove() from

@@ -236,9 +236,11 @@ StandstillWait Connection::awaitStandstill(const char* call) {
     if (!latestState(newest)) return {};  // nothing known yet: the controller decides
     if (!waited) first = newest;
     const Standstill s = standstill();
-    if (!stoppingOnItsOwn(s, newest)) return waited ? travelBetween(first, newest, rt_->dof) : StandstillWait{};
+    const bool late = net::monotonicNs() > deadline;
+    if (!settling(s, newest) || (late && s.at_rest))
+      return waited ? travelBetween(first, newest, rt_->dof) : StandstillWait{};
     waited = true;
-    if (net::monotonicNs() > deadline)
+    if (late)
       throw MotionException(std::string(call) + ": " + stillStoppingText(s) +
                             "; wait until it stands still, then try again");
     std::this_thread::sleep_for(std::chrono::milliseconds(1));

@@ -173,9 +173,10 @@ class Connection {
   Standstill standstill() const;
   // Before a motion or hand guiding is asked for: while the arm is coming to rest on its own (after
   // a stop, a reflex that was recovered, the end of hand guiding) waits for it to stand still, at
-  // most kStandstillWaitMs; then throws MotionException "<call>: the arm is still stopping (joint 2
-  // at 0.12 rad/s); wait until it stands still, then try again". Returns at once otherwise (the
-  // controller itself refuses a motion while one runs, during hand guiding or with error bits).
+  // most kStandstillWaitMs; then goes ahead if it is at rest, else throws MotionException "<call>:
+  // the arm is still stopping (joint 2 at 0.12 rad/s); wait until it stands still, then try again".
+  // Returns at once otherwise (the controller itself refuses a motion while one runs, during hand
+  // guiding or with error bits).
   // Returns how far the arm moved meanwhile.
   StandstillWait awaitStandstill(const char* call);
   // The GUI's ring of compact samples: exactly one consumer thread may pop.

@@ -21,7 +21,6 @@ constexpr int64_t kTimingRefreshNs = 100'000'000;  // SessionTiming is republish
 // ---- The end of a run ------------------------------------------------------------------------------
 
 void endRun(Connection::Realtime& rt, ControlOutcome outcome) {
-  rt.hold_requested_ns = -1;  // the next request holds where the arm is then
   rt.outcome = outcome;
   rt.last_state = rt.state;
   rt.run_active = false;  // before kDone: the caller may arm the next run right after it
@@ -193,28 +192,20 @@ void awaitEnd(Connection::Realtime& rt, bool moving, const net::Endpoint& from, 
   logCycle(rt, &rt.command);
 }
 
-// The "hold still" command of the current motion request: the measured position (joint and
-// Cartesian) of the first state answered for the request, and no extra torque.
-const RobotCommand& holdCommand(Connection::Realtime& rt) {
-  const int64_t requested = rt.motion_requested_ns.load(std::memory_order_relaxed);
-  if (rt.hold_requested_ns == requested) return rt.hold_command;
+// Answers the newest state with "hold still": the measured position (joint and Cartesian) and no
+// extra torque. Sent between StartMove and the start of the Control() run, and until the controller
+// reports the motion running. Each answer is the newest measured position, so that a callback
+// starting from the state's q continues the answers without a step; the arm stands still by then
+// (Robot::startMove waited for it: standstill.h).
+void answerWithHold(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
   const RobotState& s = rt.state;
-  RobotCommand& c = rt.hold_command;
+  RobotCommand& c = rt.command;
   c = RobotCommand{};
+  c.message_id = s.message_id;
   c.motion.q_c = s.q;
   if (rt.dof == 6) c.motion.q_c[6] = 0;
   c.motion.toolTobase_pos_c = s.toolTobase_pos_m;
   c.motion.psi_c = s.psi_m;
-  rt.hold_requested_ns = requested;
-  return c;
-}
-
-// Answers the newest state with "hold still" (holdCommand). Sent between StartMove and the start of
-// the Control() run, and until the controller reports the motion running.
-void answerWithHold(Connection::Realtime& rt, const net::Endpoint& from, int64_t received_ns) {
-  RobotCommand& c = rt.command;
-  c = holdCommand(rt);
-  c.message_id = rt.state.message_id;
   sendCommand(rt, from);
   rt.cost_stats.record(net::monotonicNs() - received_ns);
 }

@@ -82,11 +82,6 @@ struct Connection::Realtime {
   std::atomic<uint32_t> hold_kind{0};               // caller -> thread: 0 none, else ControlKind + 1
   std::atomic<int64_t> motion_requested_ns{0};      // caller -> thread: when StartMove was sent
   uint64_t last_answered_id = 0;                    // thread: message_id of the last command sent
-  // thread: the "hold still" command of the current motion request -- the measured position of the
-  // first state answered for it, repeated (the arm may still creep: following its measured position
-  // every cycle would make a jerky command stream) -- and the request it belongs to.
-  RCI::robot::RobotCommand hold_command;
-  int64_t hold_requested_ns = -1;
 
   // ---- The Control() run (see RunState) -------------------------------------------------------------
   std::atomic<uint32_t> run_state{kRunIdle};

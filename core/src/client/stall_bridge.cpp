@@ -13,6 +13,9 @@ constexpr double kDt = 1e-3;  // s per message_id
 // The tracker's three poles at -kPole (1/s): the correction is mostly gone after ~8 / kPole = 0.2 s.
 constexpr double kPole = 40.0;
 // Below these the correction is over (the final step of at most 1e-9 is far below any tolerance).
+// The share of the rated jerk plan and correction use together: the rest absorbs rounding and the
+// sampling of the plan's own jerk.
+constexpr double kJerkUse = 0.95;
 constexpr double kDoneE = 1e-9, kDoneDe = 1e-7, kDoneDde = 1e-5;
 
 }  // namespace
@@ -30,31 +33,40 @@ bool StallBridge::needsPlanHistory(uint64_t message_id) const {
   return active_ || seeded_ || (sent_count_ >= 3 && message_id > sent_id_[0] + 1);
 }
 
-StallBridge::Vec StallBridge::bridge(uint64_t message_id, const Vec& plan, const Vec& plan_1, const Vec& plan_2) {
+StallBridge::Vec StallBridge::bridge(uint64_t message_id, const PlanWindow& plan) {
   const bool gap = sent_count_ >= 3 && message_id > sent_id_[0] + 1;
   if (gap || seeded_) {
-    startFromExtrapolation(message_id, plan, plan_1, plan_2);
+    startFromExtrapolation(message_id, plan);
     if (!seeded_) ++stalls_;
     seeded_ = false;
   } else {
-    Vec plan_velocity{}, plan_acceleration{};
-    for (int i = 0; i < dims_; ++i) {
-      plan_acceleration[i] = (plan[i] - 2 * plan_1[i] + plan_2[i]) / (kDt * kDt);
-      plan_velocity[i] = (plan[i] - plan_1[i]) / kDt + 0.5 * kDt * plan_acceleration[i];
-    }
-    step(plan_velocity, plan_acceleration);
+    step(planRates(plan));
     settleIfDone();
   }
-  Vec out = plan;
+  Vec out = plan.now;
   for (int i = 0; i < dims_; ++i) out[i] += e_[i];
   return out;
+}
+
+StallBridge::PlanRates StallBridge::planRates(const PlanWindow& plan) const {
+  PlanRates r;
+  for (int i = 0; i < dims_; ++i) {
+    const double a_now = (plan.now[i] - 2 * plan.before_1[i] + plan.before_2[i]) / (kDt * kDt);
+    r.acceleration[i] = (plan.next[i] - 2 * plan.now[i] + plan.before_1[i]) / (kDt * kDt);
+    r.velocity[i] = (plan.now[i] - plan.before_1[i]) / kDt + 0.5 * kDt * a_now;
+    r.jerk[i] = (r.acceleration[i] - a_now) / kDt;
+  }
+  return r;
 }
 
 // The controller's rule for lost commands: the last command that arrived, continued with the
 // velocity and acceleration of the last three (divided differences over their message_ids). The
 // correction starts as the difference between that and the plan, in position, velocity and
 // acceleration, so the first command after the gap continues what the controller did meanwhile.
-void StallBridge::startFromExtrapolation(uint64_t message_id, const Vec& plan, const Vec& plan_1, const Vec& plan_2) {
+void StallBridge::startFromExtrapolation(uint64_t message_id, const PlanWindow& plan_window) {
+  const Vec& plan = plan_window.now;
+  const Vec& plan_1 = plan_window.before_1;
+  const Vec& plan_2 = plan_window.before_2;
   const double t0 = double(sent_id_[0]) * kDt, t1 = double(sent_id_[1]) * kDt, t2 = double(sent_id_[2]) * kDt;
   const double tau = double(message_id) * kDt - t0;
   for (int i = 0; i < dims_; ++i) {
@@ -75,10 +87,7 @@ void StallBridge::startFromExtrapolation(uint64_t message_id, const Vec& plan, c
 // Scales each group of v down to the norm limit[group] (coordinates of a group share one factor).
 void StallBridge::limitGroups(Vec& v, const Vec& limit) const {
   for (int g = 0; g < dims_; ++g) {
-    double norm2 = 0;
-    for (int i = 0; i < dims_; ++i)
-      if (limits_.group[i] == g) norm2 += v[i] * v[i];
-    const double norm = std::sqrt(norm2);
+    const double norm = groupNorm(v, g);
     if (norm <= limit[g]) continue;
     const double scale = limit[g] / norm;
     for (int i = 0; i < dims_; ++i)
@@ -93,10 +102,8 @@ void StallBridge::limitGroups(Vec& v, const Vec& limit) const {
 void StallBridge::guardVelocity(const Vec& velocity, Vec& jerk) const {
   for (int g = 0; g < dims_; ++g) {
     if (limits_.velocity[g] <= 0) continue;
-    double speed2 = 0, along = 0;
-    for (int i = 0; i < dims_; ++i)
-      if (limits_.group[i] == g) speed2 += velocity[i] * velocity[i];
-    const double speed = std::sqrt(speed2);
+    double along = 0;
+    const double speed = groupNorm(velocity, g);
     if (speed <= 0) continue;
     for (int i = 0; i < dims_; ++i)
       if (limits_.group[i] == g) along += (dde_[i] + jerk[i] * kDt) * velocity[i] / speed;
@@ -108,27 +115,45 @@ void StallBridge::guardVelocity(const Vec& velocity, Vec& jerk) const {
   }
 }
 
+// The norm of a group's coordinates of v (the group starting at coordinate g).
+double StallBridge::groupNorm(const Vec& v, int g) const {
+  double norm2 = 0;
+  for (int i = 0; i < dims_; ++i)
+    if (limits_.group[i] == g) norm2 += v[i] * v[i];
+  return std::sqrt(norm2);
+}
+
 // One cycle of the tracker: jerk = -(3p e'' + 3p^2 e' + p^3 e), guarded against the velocity
-// limit, within the reserve; then the command's acceleration (plan's + correction's) within the
-// limit. The correction is integrated exactly for the jerk held over the cycle (a cubic piece), so
-// its divided differences -- what the controller checks -- are those of a smooth curve, also right
-// after the extrapolated start.
-void StallBridge::step(const Vec& plan_velocity, const Vec& plan_acceleration) {
-  Vec jerk{}, velocity{};
+// limit, within what the plan leaves of the rated jerk (at least the reserve); then the command's
+// acceleration within the limit. The acceleration limited is the one the controller will measure
+// with the next command -- the plan's second difference centred on this cycle plus the correction's
+// acceleration at its end -- less what the correction's jerk can add to a second difference
+// (jerk dt / 3). The correction is integrated exactly for the jerk held over the cycle (a cubic
+// piece), so its divided differences are those of a smooth curve, also right after the extrapolated
+// start.
+void StallBridge::step(const PlanRates& plan) {
+  Vec jerk{}, velocity{}, available{}, allowed{};
   for (int i = 0; i < dims_; ++i) {
     jerk[i] = -(3 * kPole * dde_[i] + 3 * kPole * kPole * de_[i] + kPole * kPole * kPole * e_[i]);
-    velocity[i] = plan_velocity[i] + de_[i];
+    velocity[i] = plan.velocity[i] + de_[i];
+  }
+  for (int g = 0; g < dims_; ++g) {
+    if (limits_.group[g] != g) continue;
+    available[g] = std::max(limits_.jerk_reserve[g], kJerkUse * limits_.jerk[g] - groupNorm(plan.jerk, g));
+    allowed[g] = std::max(0.0, limits_.acceleration[g] - available[g] * kDt / 3);
   }
   guardVelocity(velocity, jerk);
-  limitGroups(jerk, limits_.jerk_reserve);
+  limitGroups(jerk, available);
   Vec total{};
-  for (int i = 0; i < dims_; ++i) total[i] = dde_[i] + jerk[i] * kDt + plan_acceleration[i];
-  limitGroups(total, limits_.acceleration);
+  for (int i = 0; i < dims_; ++i) total[i] = dde_[i] + jerk[i] * kDt + plan.acceleration[i];
+  limitGroups(total, allowed);
+  Vec held_jerk{};
+  for (int i = 0; i < dims_; ++i) held_jerk[i] = (total[i] - plan.acceleration[i] - dde_[i]) / kDt;
+  limitGroups(held_jerk, available);  // smooth first: an acceleration the jerk cannot reach waits a cycle
   for (int i = 0; i < dims_; ++i) {
-    const double held_jerk = (total[i] - plan_acceleration[i] - dde_[i]) / kDt;
-    e_[i] += de_[i] * kDt + dde_[i] * kDt * kDt / 2 + held_jerk * kDt * kDt * kDt / 6;
-    de_[i] += dde_[i] * kDt + held_jerk * kDt * kDt / 2;
-    dde_[i] += held_jerk * kDt;
+    e_[i] += de_[i] * kDt + dde_[i] * kDt * kDt / 2 + held_jerk[i] * kDt * kDt * kDt / 6;
+    de_[i] += dde_[i] * kDt + held_jerk[i] * kDt * kDt / 2;
+    dde_[i] += held_jerk[i] * kDt;
   }
 }
 
@@ -156,6 +181,7 @@ StallBridge::Limits jointBridgeLimits(const model::RobotSpec& spec, double share
   for (int i = 0; i < spec.dof; ++i) {
     limits.velocity[i] = spec.dq_max[i];
     limits.acceleration[i] = spec.ddq_max[i];
+    limits.jerk[i] = spec.jerk_max[i];
     limits.jerk_reserve[i] = reserve * spec.jerk_max[i];
   }
   return limits;
@@ -170,12 +196,15 @@ StallBridge::Limits cartesianBridgeLimits(double share) {
     limits.velocity[i] = controller.v_trans;
     limits.velocity[i + 3] = controller.v_rot;
     limits.acceleration[i] = controller.a_trans;
+    limits.jerk[i] = controller.j_trans;
+    limits.jerk[i + 3] = controller.j_rot;
     limits.jerk_reserve[i] = reserve * planner.j_trans;
     limits.acceleration[i + 3] = controller.a_rot;
     limits.jerk_reserve[i + 3] = reserve * planner.j_rot;
   }
   limits.velocity[6] = controller.v_elbow;
   limits.acceleration[6] = controller.a_elbow;
+  limits.jerk[6] = controller.j_elbow;
   limits.jerk_reserve[6] = reserve * planner.j_elbow;
   limits.group = {0, 0, 0, 3, 3, 3, 6};
   return limits;

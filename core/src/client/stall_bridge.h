@@ -28,12 +28,14 @@ class StallBridge {
   using Vec = std::array<double, kMaxDims>;
 
   // Coordinates are limited in groups (a joint alone; the three of a Cartesian translation or
-  // rotation together, as the controller limits the norm): the acceleration the group's command
-  // must not exceed, and the jerk the correction may add on top of the plan's own (the plan's
-  // reserve), both read at the group's first coordinate.
+  // rotation together, as the controller limits the norm): the velocity and acceleration the group's
+  // command must not exceed, its rated jerk, and the jerk the correction may always add on top of the
+  // plan's own (the plan's reserve; where the plan's jerk leaves more of the rated one unused, the
+  // correction may use that), all read at the group's first coordinate.
   struct Limits {
     Vec velocity{};  // 0: not guarded
     Vec acceleration{};
+    Vec jerk{};
     Vec jerk_reserve{};
     std::array<int, kMaxDims> group{0, 1, 2, 3, 4, 5, 6};  // the first coordinate of each one's group
   };
@@ -47,13 +49,14 @@ class StallBridge {
   void startAt(uint64_t message_id, const Vec& commanded);
 
   // The command to answer the state with `message_id`. plan_at(k) returns the plan's value k
-  // cycles earlier (k = 0: at message_id); k = 1 and 2 are asked for only while a stall is being
-  // bridged. Without a gap in message_id (and no correction left) the command is the plan itself.
+  // cycles earlier (k = 0: at message_id; k = -1: the next cycle's); k = -1, 1 and 2 are asked for
+  // only while a stall is being bridged. Without a gap in message_id (and no correction left) the
+  // command is the plan itself.
   template <class PlanAt>
   Vec command(uint64_t message_id, const PlanAt& plan_at) {
     const Vec plan = plan_at(0);
     if (!needsPlanHistory(message_id)) return remember(message_id, plan);
-    return remember(message_id, bridge(message_id, plan, plan_at(1), plan_at(2)));
+    return remember(message_id, bridge(message_id, PlanWindow{plan_at(-1), plan, plan_at(1), plan_at(2)}));
   }
 
   // True while a correction is still being brought to zero (the motion must not end yet).
@@ -62,12 +65,26 @@ class StallBridge {
   int stalls() const { return stalls_; }
 
  private:
+  // The plan around the cycle being answered: the next cycle's value, this one's, and the two before.
+  struct PlanWindow {
+    Vec next, now, before_1, before_2;
+  };
+  // The plan's rates the tracker needs, by divided differences of the window.
+  struct PlanRates {
+    Vec velocity{};           // at this cycle
+    Vec acceleration{};       // second difference centred on this cycle: what the controller will
+                              // measure with the next command
+    Vec jerk{};               // third difference
+  };
+  PlanRates planRates(const PlanWindow& plan) const;
+
   bool needsPlanHistory(uint64_t message_id) const;
-  Vec bridge(uint64_t message_id, const Vec& plan, const Vec& plan_1, const Vec& plan_2);
+  Vec bridge(uint64_t message_id, const PlanWindow& plan);
   Vec remember(uint64_t message_id, const Vec& command);
-  void startFromExtrapolation(uint64_t message_id, const Vec& plan, const Vec& plan_1, const Vec& plan_2);
-  void step(const Vec& plan_velocity, const Vec& plan_acceleration);
+  void startFromExtrapolation(uint64_t message_id, const PlanWindow& plan);
+  void step(const PlanRates& plan);
   void guardVelocity(const Vec& velocity, Vec& jerk) const;
+  double groupNorm(const Vec& v, int g) const;
   void limitGroups(Vec& v, const Vec& limit) const;
   void settleIfDone();
 

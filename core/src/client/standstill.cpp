@@ -2,6 +2,7 @@
 // StandstillWatch (standstill.h): the fastest joint of each state, and how long all were still.
 #include "client/standstill.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -24,18 +25,21 @@ const Standstill& StandstillWatch::update(const RCI::robot::RobotState& s, int d
       now_.fastest_joint = i;
     }
   }
-  if (now_.fastest_speed < kStillSpeed) {
-    if (still_states_ < kStillStates) ++still_states_;
-  } else {
-    still_states_ = 0;
-  }
+  auto count = [](uint32_t& states, bool below) { states = below ? std::min(states + 1, kStillStates) : 0; };
+  count(still_states_, now_.fastest_speed < kStillSpeed);
+  count(rest_states_, now_.fastest_speed < kRestSpeed);
   now_.still = still_states_ >= kStillStates;
+  now_.at_rest = rest_states_ >= kStillStates;
   return now_;
 }
 
-bool stoppingOnItsOwn(const Standstill& s, const RCI::robot::RobotState& newest) {
+bool settling(const Standstill& s, const RCI::robot::RobotState& newest) {
   if (!s.known || s.still || anyError(newest.errors)) return false;
   return newest.robot_mode != RobotMode::kMove && newest.robot_mode != RobotMode::kGuiding;
+}
+
+bool stoppingOnItsOwn(const Standstill& s, const RCI::robot::RobotState& newest) {
+  return settling(s, newest) && !s.at_rest;
 }
 
 StandstillWait travelBetween(const RCI::robot::RobotState& before, const RCI::robot::RobotState& after, int dof) {

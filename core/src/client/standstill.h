@@ -12,16 +12,24 @@
 
 namespace xmate::client {
 
-// A joint counts as still below this speed (measured and commanded), rad/s ...
-inline constexpr double kStillSpeed = 0.01;
-// ... and the arm once every joint was still in this many states in a row (1 ms each).
+// Two levels, per joint, rad/s of the measured and the commanded speed (whichever is higher).
+// Still: the "hold still" answers between StartMove and the motion follow the measured position and
+// the controller checks their jerk, and a creep of v rad/s starting from rest reads as a jerk of
+// v / (1 ms)^2 -- so a motion starts best once every joint is far below the 3.5e-3 rad/s that make
+// 3500 rad/s^3 (the smallest rated jerk). At rest: slow enough that the arm is no longer stopping
+// (a real arm's measured speed may never settle below the first level: its encoders are noisy).
+inline constexpr double kStillSpeed = 1e-3;
+inline constexpr double kRestSpeed = 0.01;
+// A level counts once every joint was below it in this many states in a row (1 ms each).
 inline constexpr uint32_t kStillStates = 10;
-// How long a motion request waits for the arm to come to rest before it is refused.
+// How long a motion request waits for the arm to stand still; then it goes ahead if the arm is at
+// rest, and is refused if it is still stopping.
 inline constexpr int kStandstillWaitMs = 1000;
 
 struct Standstill {
   bool known = false;         // a state has arrived
   bool still = false;         // every joint below kStillSpeed for kStillStates states in a row
+  bool at_rest = false;       // every joint below kRestSpeed for kStillStates states in a row
   int fastest_joint = 0;      // 0-based: the fastest joint of the newest state ...
   double fastest_speed = 0;   // ... and its speed, rad/s (the larger of measured and commanded)
   uint64_t message_id = 0;    // the newest state's
@@ -35,11 +43,14 @@ class StandstillWatch {
 
  private:
   Standstill now_;
-  uint32_t still_states_ = 0;
+  uint32_t still_states_ = 0, rest_states_ = 0;
 };
 
-// True when the arm is coming to rest on its own: no motion and no hand guiding running, no error
-// bits (a reflex must be recovered first), but a joint still moving.
+// True when the arm is settling on its own: no motion and no hand guiding running, no error bits (a
+// reflex must be recovered first), but not yet still. A motion request waits for it to end.
+bool settling(const Standstill& s, const RCI::robot::RobotState& newest);
+// True when it is still stopping: settling and not even at rest (what the window shows, and a
+// refusal's cause).
 bool stoppingOnItsOwn(const Standstill& s, const RCI::robot::RobotState& newest);
 
 // How far the arm moved while a request waited for it to stand still (all 0 when it did not wait):

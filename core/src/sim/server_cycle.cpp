@@ -31,25 +31,27 @@ void sendBytes(Server::Impl& s, const OutgoingState& out) {
   if (s.udp.sendTo(s.stream_to, out.bytes.data(), out.size) > 0) ++s.counters.states_sent;
 }
 
-void sendState(Server::Impl& s) {
+// Sends the state (or holds, drops it: packet faults); false when it was dropped.
+bool sendState(Server::Impl& s) {
   OutgoingState out;
   protocol::encodeRobotState(s.controller->state(), out.bytes);
   switch (applyStateFaults(s.state_faults, out, s.counters)) {
     case StateFate::kDrop:
-      return;
+      return false;
     case StateFate::kHold:
       s.state_faults.held = out;
       s.state_faults.holding = true;
-      return;
+      return true;
     case StateFate::kSend:
       sendBytes(s, out);
-      return;
+      return true;
     case StateFate::kSendThenHeld:
       sendBytes(s, out);
       sendBytes(s, s.state_faults.held);
       s.state_faults.holding = false;
-      return;
+      return true;
   }
+  return true;
 }
 
 // ---- Receiving --------------------------------------------------------------------------------------
@@ -146,9 +148,10 @@ void runOneCycle(Server::Impl& s, int64_t& next_tick_ns) {
   slot.message_id = s.controller->state().message_id;
   slot.wanted = s.streaming && s.controller->expectsCommand();
   publishAwaitedAnswer(s, slot.wanted ? slot.message_id : 0);  // before the client can see the state
-  if (s.streaming) sendState(s);
+  const bool dropped = s.streaming && !sendState(s);
 
-  const bool lockstep = s.config.clock == ClockMode::kLockStep && slot.wanted;
+  // Lock-step waits for the answer to a state the client got; one it never got is lost at once.
+  const bool lockstep = s.config.clock == ClockMode::kLockStep && slot.wanted && !dropped;
   if (lockstep) {
     awaitAnswer(s, slot, net::monotonicNs() + int64_t(s.config.lockstep_timeout_ms) * 1'000'000, true);
     next_tick_ns = net::monotonicNs();  // idle cycles go on in wall time from here
