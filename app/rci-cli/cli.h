@@ -17,6 +17,10 @@ class Link;
 class JointStream;
 }  // namespace xmate::rsi
 
+namespace rci_cli::soak {
+struct SoakOptions;
+}  // namespace rci_cli::soak
+
 namespace CLI {
 class App;
 class Option;
@@ -163,6 +167,9 @@ int runBenchLoop(const LoopOptions& options);  // rci-cli bench loop [--robot si
 int runBenchClient(long cycles);             // rci-cli bench client [--cycles N]
 int runBenchRsi(long cycles);                // rci-cli bench rsi [--cycles N]
 int runBenchPath(double seconds, int rounds);  // rci-cli bench path [--seconds S] [--rounds N]
+// rci-cli bench soak [--motions N] [--loss PERCENT] [--seed N] [--no-burners] [--lockstep] [--json];
+// exits 1 when a motion failed.
+int runBenchSoak(const soak::SoakOptions& options, bool json);
 int runRun(const RunOptions& options);
 // rci-cli guide --robot rsi:ETHERNET.xml --model NAME --sensor HOST[:PORT] [--axes A] [--tool-mass KG] ...
 int runGuide(const GuideOptions& options);       // rci-cli run PROGRAM.json --robot sim|HOST:PORT [--model NAME] [--speed R] [--report FILE] [--fast]

@@ -2,7 +2,7 @@
 // rci-cli: headless tools for xMate robots (docs/client.md) and KUKA arms over RSI (docs/rsi.md).
 // Without arguments it describes the default model; subcommands read a robot's state live (RCI or
 // RSI), check the machine's real-time setup, benchmark the 1 kHz loop and the client's and the RSI
-// link's cost per cycle, and run taught programs headless.
+// link's cost per cycle, soak motions under lost states, and run taught programs headless.
 // The command line is CLI11's: a subcommand per tool, each with its generated --help.
 #include <cstdio>
 #include <string>
@@ -12,6 +12,7 @@
 
 #include "cli.h"
 #include "net/realtime.h"
+#include "soak/soak.h"
 
 namespace {
 
@@ -57,15 +58,15 @@ std::string explain(const CLI::ParseError& e, const CLI::App& app, const CLI::Ap
     if (!first.empty() && first[0] == '-')
       return (name.empty() ? "" : name + ": ") + "unknown option '" + first + "'";
     if (command == &app) return "unknown command '" + first + "' (known: model, state, run, guide, doctor, bench, ft, help)";
-    if (name == "bench") return "unknown bench '" + first + "' (known: loop, client, rsi, path)";
+    if (name == "bench") return "unknown bench '" + first + "' (known: loop, client, rsi, path, soak)";
     return name + ": unexpected argument '" + first + "'";
   }
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) return what.substr(0, what.find(':')) + " needs a value";
   if (dynamic_cast<const CLI::RequiredError*>(&e)) {
     if (name == "bench") {
       const auto rest = command->remaining();
-      return rest.empty() ? "bench needs 'loop', 'client', 'rsi' or 'path'"
-                          : "unknown bench '" + rest.front() + "' (known: loop, client, rsi, path)";
+      return rest.empty() ? "bench needs 'loop', 'client', 'rsi', 'path' or 'soak'"
+                          : "unknown bench '" + rest.front() + "' (known: loop, client, rsi, path, soak)";
     }
     if (what.rfind("PROGRAM", 0) == 0) return "run needs a program file (PROGRAM.json)";
     if (what.rfind("--robot", 0) == 0)
@@ -82,6 +83,13 @@ std::string explain(const CLI::ParseError& e, const CLI::App& app, const CLI::Ap
       return what.substr(0, colon) + " " + what.substr(colon + 2);
   }
   return what;
+}
+
+// bench soak's options as parsed: the seed, and --loss 0 switching the whole loss pattern off.
+soak::SoakOptions soakOptions(soak::SoakOptions options, long seed) {
+  options.seed = uint32_t(seed);
+  if (options.loss_percent == 0) options.burst_states = options.burst_every_ms = 0;
+  return options;
 }
 
 // The message, then the usage of the command it is about.
@@ -140,8 +148,9 @@ int main(int argc, char** argv) {
 
   CLI::App* doctor = app.add_subcommand("doctor", "real-time fitness of this machine, with advice");
 
-  CLI::App* bench =
-      app.add_subcommand("bench", "benchmarks: the 1 kHz loop, the client's and the RSI link's cost per cycle, demonstrated paths");
+  CLI::App* bench = app.add_subcommand(
+      "bench", "benchmarks: the 1 kHz loop, the client's and the RSI link's cost per cycle, demonstrated paths, a soak "
+               "of motions under lost states");
   bench->require_subcommand(1);
   LoopOptions loop_options;
   CLI::App* loop = bench->add_subcommand("loop", "1 kHz joint-position loop: period, jitter, late and lost cycles");
@@ -163,6 +172,25 @@ int main(int argc, char** argv) {
               "as JSON");
   addWholeNumberOption(*path_bench, "--seconds", path_seconds, 1, 3600, "length of the recording (default 60)");
   addWholeNumberOption(*path_bench, "--rounds", path_rounds, 1, 1000, "rounds to take the median of (default 5)");
+  soak::SoakOptions soak_options;
+  long soak_seed = soak_options.seed;
+  bool soak_json = false;
+  CLI::App* soak_bench = bench->add_subcommand(
+      "soak", "hundreds of mixed motions (MOVEJ/L/C at full speed, PATH replays, the manual's callbacks) against "
+              "the in-process simulator on its real-time clock while it loses states at random and two threads burn "
+              "CPU: failures per motion kind, states lost, wall time (exit status 1 when a motion failed)");
+  addWholeNumberOption(*soak_bench, "--motions", soak_options.motions, 1, 1'000'000, "motions to run (default 200)");
+  addDecimalOption(*soak_bench, "--loss", soak_options.loss_percent, 0, 50, "a percentage from 0 to 50",
+                   "states lost at random, % (default 2; 30 % of the losses are pairs, and 5 states in a row are "
+                   "lost every 10 s; 0: nothing is lost)")
+      ->type_name("PERCENT");
+  addWholeNumberOption(*soak_bench, "--seed", soak_seed, 0, 2'147'483'647, "the loss pattern's seed (default 1)");
+  soak_bench->add_flag_callback("--no-burners", [&] { soak_options.burners = false; },
+                                "no CPU-burning threads beside the soak");
+  soak_bench->add_flag("--lockstep", soak_options.lockstep,
+                       "the simulator's lock-step clock: states are lost but never late (with --loss 0, a control "
+                       "run)");
+  soak_bench->add_flag("--json", soak_json, "the figures as JSON");
 
   FtOptions ft_options;
   CLI::App* ft = app.add_subcommand("ft", "read an ATI Net F/T force/torque sensor: Fx Fy Fz (N) and Tx Ty Tz (Nm) per sample");
@@ -241,7 +269,7 @@ int main(int argc, char** argv) {
     // Commands that talk to a controller pin the whole process in RAM (the library locks only its
     // real-time thread's memory); refused without privileges, reported by the session then.
     if (state->parsed() || run->parsed() || guide->parsed() || loop->parsed() || client->parsed() ||
-        rsi_bench->parsed())
+        rsi_bench->parsed() || soak_bench->parsed())
       xmate::net::lockAllMemory();
     if (state->parsed()) return state_options.robot.rsi ? runStateRsi(state_options) : runState(state_options);
     if (run->parsed()) return runRun(run_options);
@@ -256,6 +284,7 @@ int main(int argc, char** argv) {
     if (client->parsed()) return runBenchClient(client_cycles);
     if (rsi_bench->parsed()) return runBenchRsi(rsi_cycles);
     if (path_bench->parsed()) return runBenchPath(double(path_seconds), int(path_rounds));
+    if (soak_bench->parsed()) return runBenchSoak(soakOptions(soak_options, soak_seed), soak_json);
     return runModel(model_type);  // `rci-cli` alone or `rci-cli model [NAME]`
   } catch (const UsageError& e) {
     const CLI::App* command = selectedCommand(app);

@@ -198,6 +198,7 @@ class TestLostStates : public QObject {
   void executorThroughLostStates();
   void randomLossAtFullSpeed();
   void heavyLossOnTheLockStepClock();
+  void handGuidingIntoTheWallsAndBackThroughLostStates();
 };
 
 void TestLostStates::controlCallsTheCallbackForEveryMissedState() {
@@ -392,6 +393,35 @@ void TestLostStates::heavyLossOnTheLockStepClock() {
     }
   }
   QVERIFY(server->status().counters.loss_bursts > 0);
+}
+
+// Hand guiding on the real-time clock under 2 % random loss: from q = (0, 30, 0, 60, 0, 90, 0) deg a
+// steady 60 N push along -x (towards the J1 axis, into the wrist-axis wall and the arm angle's
+// limit) in Cartesian and then in joint guiding raises no error bit; after each the arm comes to
+// rest, guiding ends and a MOVEJ takes it back to where it started.
+void TestLostStates::handGuidingIntoTheWallsAndBackThroughLostStates() {
+  constexpr double kDeg = M_PI / 180.0;
+  auto server = startSim(realTimeClock());
+  const std::array<double, 7> start{0, 30 * kDeg, 0, 60 * kDeg, 0, 90 * kDeg, 0};
+  server->placeArm(start);
+  auto robot = robotFor(*server);
+  RandomLoss loss(*server, 5);
+  for (int space : {2, 1}) {  // Cartesian, then joint guiding; free (translation and rotation)
+    robot->startDrag(space, 3);
+    server->setExternalWrench({-60, 0, 0, 0, 0, 0});
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+    while (std::chrono::steady_clock::now() < until) {
+      const RobotState s = robot->receiveRobotState();
+      QVERIFY2(!anyError(s), qPrintable(QStringLiteral("guiding space %1: error bits while pushed").arg(space)));
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    server->setExternalWrench({});
+    QVERIFY(maxAbsDiff(robot->receiveRobotState().q, start) > 0.05);  // the push moved the arm
+    robot->stopDrag();
+    MOVEJ(0.5, robot->receiveRobotState().q, start, *robot);  // waits for standstill first
+    QVERIFY(settlesAt(*robot, start));
+  }
+  QVERIFY(server->status().counters.states_lost > 0);
 }
 
 QTEST_GUILESS_MAIN(TestLostStates)

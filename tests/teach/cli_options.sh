@@ -40,7 +40,7 @@ expect 2 "NAME: unknown model 'xmate9'" model xmate9
 # Unknown options and commands, extra arguments.
 expect 2 "state: unknown option '--frobnicate'" state --robot 127.0.0.1:1 --frobnicate
 expect 2 "unknown command 'frob' (known: model, state, run, guide, doctor, bench, ft, help)" frob
-expect 2 "unknown bench 'fast' (known: loop, client, rsi, path)" bench fast
+expect 2 "unknown bench 'fast' (known: loop, client, rsi, path, soak)" bench fast
 expect 2 "model: unexpected argument 'xmate3'" model xmate7 xmate3
 # Missing values and missing required arguments.
 expect 2 "--robot needs a value" state --robot
@@ -48,7 +48,7 @@ expect 2 "--cycles needs a value" bench loop --cycles
 expect 2 "state needs --robot HOST:PORT (an xMate) or --robot rsi:ETHERNET.xml (a KUKA over RSI)" state --count 3
 expect 2 "run needs --robot sim or --robot HOST:PORT" run p.json
 expect 2 "run needs a program file (PROGRAM.json)" run --robot sim
-expect 2 "bench needs 'loop', 'client', 'rsi' or 'path'" bench
+expect 2 "bench needs 'loop', 'client', 'rsi', 'path' or 'soak'" bench
 # Options that exclude each other.
 expect 2 "--fast applies to the in-process simulator (--robot sim)" run p.json --robot 127.0.0.1:1 --fast
 # run on a KUKA over RSI: the RSI options only with rsi:, a cycle of 4 or 12 ms.

@@ -9,14 +9,13 @@
 
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <memory>
 #include <thread>
-#include <vector>
 
 #include <xmate/model.h>
 #include <xmate/robot.h>
 
+#include "net/cpu_burners.h"
 #include "sim/server.h"
 #include "stall_injector.h"
 #include "teach/executor.h"
@@ -33,27 +32,6 @@ constexpr int kRoundsPerSimulator = 10;  // then the window's "switch target": a
 constexpr XmateType kType = XMATE7_PRO;
 constexpr int kStallMs = 4;         // the real-time thread's injected stall ...
 constexpr int kStallEveryMs = 40;  // ... and how often
-
-// Two threads that keep both cores of a small machine busy until destroyed.
-class CpuBurners {
- public:
-  CpuBurners() {
-    for (int i = 0; i < 2; ++i)
-      threads_.emplace_back([this] {
-        volatile double x = 1.0;
-        while (!stop_.load(std::memory_order_relaxed))
-          for (int k = 0; k < 10000; ++k) x = std::sqrt(x + 1.0);
-      });
-  }
-  ~CpuBurners() {
-    stop_.store(true);
-    for (auto& t : threads_) t.join();
-  }
-
- private:
-  std::atomic<bool> stop_{false};
-  std::vector<std::thread> threads_;
-};
 
 // Stalls the client's real-time thread (whichever Robot is connected) regularly until destroyed.
 class RegularStalls {
@@ -156,7 +134,7 @@ void TestReplayStress::replaysAfterReconnectsUnderLoad() {
   }
   const Program program = loadProgram(path);
 
-  CpuBurners burners;
+  net::CpuBurners burners;  // both cores of a small machine busy
   RegularStalls stalls;
   Executor executor;  // one for all rounds, as the window's Program panel keeps one
   std::unique_ptr<Robot> robot;
