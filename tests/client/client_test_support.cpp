@@ -106,12 +106,24 @@ std::string MachineStalls::summary() const {
 std::string excusingMachineStalls(Robot& robot, MachineStalls& stalls, double injected_ms,
                                   const std::function<std::string()>& attempt) {
   const std::array<double, 7> began = robot.receiveRobotState().q;
+  auto goBack = [&]() -> std::string {  // recover and return; "" or what went wrong
+    try {
+      whenReady([&] { robot.automaticErrorRecovery(); });
+      eventually([&] { return !anyError(robot.receiveRobotState()); }, 3000);
+      whenReady([&] { MOVEJ(0.3, robot.receiveRobotState().q, began, robot); });
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return {};
+  };
   for (;;) {
     const std::string failure = attempt();
     if (failure.empty() || !stalls.excuse(failure, injected_ms) || stalls.exhausted()) return failure;
-    whenReady([&] { robot.automaticErrorRecovery(); });
-    eventually([&] { return !anyError(robot.receiveRobotState()); }, 3000);
-    whenReady([&] { MOVEJ(0.3, robot.receiveRobotState().q, began, robot); });
+    for (;;) {  // the way back may be stopped by the machine too
+      const std::string back = goBack();
+      if (back.empty()) break;
+      if (!stalls.excuse(back) || stalls.exhausted()) return "returning after a stall of the machine: " + back;
+    }
   }
 }
 
