@@ -15,6 +15,7 @@
 #include <xmate/move.h>
 #include <xmate/robot.h>
 
+#include "client/connection.h"
 #include "client/standstill.h"
 #include "model/robot_spec.h"
 #include "client_test_support.h"
@@ -89,6 +90,7 @@ class TestMotionRequests : public QObject {
  private slots:
   void standstillWatchFollowsTheStates();
   void moveBackRightAfterEveryKindOfStop();
+  void startReadWhileTheArmStillMovedIsAccepted();
   void refusalsNameTheCauseThatHolds();
   void targetsBeyondSoftLimitsAreRefusedBeforeMoving();
   void movingBackTowardsTheLimitsIsAllowed();
@@ -170,6 +172,42 @@ void TestMotionRequests::moveBackRightAfterEveryKindOfStop() {
   server->setExternalWrench({0, 0, 0, 0, 0, 0});
   robot->stopDrag();
   moveBack("the end of hand guiding");
+}
+
+// A program reads the state right after the end of hand guiding, while the arm still comes to rest,
+// and passes its q as the MOVEJ start a moment later: the arm moved on meanwhile (more than the 1e-3
+// rad a start may be off), and the MOVEJ starts all the same. A start off by as much at rest is refused.
+void TestMotionRequests::startReadWhileTheArmStillMovedIsAccepted() {
+  auto server = startSim();
+  auto robot = robotFor(*server);
+  const std::array<double, 7> home = robot->receiveRobotState().q;
+  robot->setMotorPower(1);
+  robot->startDrag(1, 3);
+  server->setExternalWrench({0, 60, 0, 0, 0, 0});
+  QVERIFY(eventually([&] { return std::abs(robot->receiveRobotState().dq_m[0]) > 0.1; }, 3000));
+  server->setExternalWrench({0, 0, 0, 0, 0, 0});
+  robot->stopDrag();
+  const RobotState read = robot->receiveRobotState();
+  // Watched without receiveRobotState(), which would hand the program a newer state.
+  auto movedSinceRead = [&] {
+    RobotState now;
+    robot->connection().latestState(now);
+    return client::travelBetween(read, now, 7).joint_travel;
+  };
+  QVERIFY(eventually([&] { return movedSinceRead() > 2e-3; }, 1000));
+  try {
+    MOVEJ(0.5, read.q, home, *robot);
+  } catch (const std::exception& e) {
+    QFAIL(e.what());
+  }
+  std::array<double, 7> off = robot->receiveRobotState().q;
+  off[0] += 2e-3;
+  try {
+    MOVEJ(0.5, off, home, *robot);
+    QFAIL("a start 2e-3 rad off at rest was accepted");
+  } catch (const MotionException& e) {
+    QVERIFY2(says(e, "q_start[0]") && says(e, "pass the current state"), e.what());
+  }
 }
 
 void TestMotionRequests::refusalsNameTheCauseThatHolds() {

@@ -3,6 +3,7 @@
 // real-time thread, the Connect handshake), TCP requests, waiting for states, and Control() runs.
 #include "client/connection.h"
 
+#include <cmath>
 #include <cstdio>
 #include <thread>
 
@@ -201,6 +202,8 @@ RCI::robot::RobotState Connection::waitForState() {
   for (;;) {
     if (rt.latest.version() != version) {
       rt.latest.load(state);
+      std::lock_guard lock(handed_out_mutex_);
+      handed_out_ = state;
       return state;
     }
     if (rt.wrong_length_count.load(std::memory_order_acquire) != wrong)
@@ -238,13 +241,29 @@ StandstillWait Connection::awaitStandstill(const char* call) {
     const Standstill s = standstill();
     const bool late = net::monotonicNs() > deadline;
     if (!settling(s, newest) || (late && s.at_rest))
-      return waited ? travelBetween(first, newest, rt_->dof) : StandstillWait{};
+      return travelSince(waited ? &first : nullptr, newest);
     waited = true;
     if (late)
       throw MotionException(std::string(call) + ": " + stillStoppingText(s) +
                             "; wait until it stands still, then try again");
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
+}
+
+StandstillWait Connection::travelSince(const RCI::robot::RobotState* wait_began,
+                                       const RCI::robot::RobotState& newest) const {
+  StandstillWait travel = wait_began ? travelBetween(*wait_began, newest, rt_->dof) : StandstillWait{};
+  std::lock_guard lock(handed_out_mutex_);
+  if (!handed_out_ || handed_out_->message_id > newest.message_id) return travel;
+  bool moving = false;
+  for (int i = 0; i < rt_->dof; ++i)
+    moving |= std::fmax(std::fabs(handed_out_->dq_m[size_t(i)]), std::fabs(handed_out_->dq_c[size_t(i)])) >= kStillSpeed;
+  if (!moving) return travel;
+  const StandstillWait since_read = travelBetween(*handed_out_, newest, rt_->dof);
+  travel.joint_travel = std::fmax(travel.joint_travel, since_read.joint_travel);
+  travel.tcp_travel = std::fmax(travel.tcp_travel, since_read.tcp_travel);
+  travel.rotation_travel = std::fmax(travel.rotation_travel, since_read.rotation_travel);
+  return travel;
 }
 
 SessionTiming Connection::timing() const {

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -165,7 +166,8 @@ class Connection {
 
   // ---- States (any thread) --------------------------------------------------------------------------
   // Waits for a state newer than the newest one at the time of the call. Throws UdpException on
-  // timeout (options().timeouts.state_ms) or when datagrams of another size arrive.
+  // timeout (options().timeouts.state_ms) or when datagrams of another size arrive. Remembers the
+  // state it returns (awaitStandstill counts the travel since a state read while the arm moved).
   RCI::robot::RobotState waitForState();
   // Copies the newest state; false if none arrived yet. Never blocks.
   bool latestState(RCI::robot::RobotState& out) const;
@@ -177,7 +179,9 @@ class Connection {
   // the arm is still stopping (joint 2 at 0.12 rad/s); wait until it stands still, then try again".
   // Returns at once otherwise (the controller itself refuses a motion while one runs, during hand
   // guiding or with error bits).
-  // Returns how far the arm moved meanwhile.
+  // Returns how far the arm moved meanwhile -- counted from the state waitForState() last returned
+  // when that state was read while the arm still moved (the start a program passes is read just
+  // before it asks, and the arm moved on since).
   StandstillWait awaitStandstill(const char* call);
   // The GUI's ring of compact samples: exactly one consumer thread may pop.
   SampleRing& samples() { return *samples_; }
@@ -257,6 +261,11 @@ class Connection {
   net::RealtimeStatus status_;
   mutable std::mutex remembered_mutex_;  // guards remembered_
   Remembered remembered_;
+  // How far the arm moved from the state the wait began with (null: it did not wait) and from the
+  // state last handed out, if that was read while the arm moved, to newest.
+  StandstillWait travelSince(const RCI::robot::RobotState* wait_began, const RCI::robot::RobotState& newest) const;
+  mutable std::mutex handed_out_mutex_;  // guards handed_out_
+  std::optional<RCI::robot::RobotState> handed_out_;  // what waitForState() last returned
 };
 
 }  // namespace xmate::client
