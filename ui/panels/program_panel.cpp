@@ -280,7 +280,6 @@ QLayout* ProgramPanel::buildEditRows(QWidget* group) {
   auto* del = makeButton(QStringLiteral("program.delete"), tr("Delete"), tr("Delete the selected instruction"), group);
   touch_ = makeButton(QStringLiteral("program.touchup"), tr("Touch up"),
                       tr("Replace the selected waypoint's target with the robot's current pose"), group);
-  auto* touch = touch_;
   touch_via_ = makeButton(QStringLiteral("program.touchupVia"), tr("Touch up via"),
                           tr("Replace the selected MOVEC's via point with the robot's current pose"), group);
   auto* go = makeButton(QStringLiteral("program.goto"), tr("Go to"),
@@ -295,11 +294,11 @@ QLayout* ProgramPanel::buildEditRows(QWidget* group) {
     edit_buttons_ << b;
   }
   column = 0;
-  for (auto* b : {touch, touch_via_, go}) {
+  for (auto* b : {touch_, touch_via_, go}) {
     compactButton(b);
     rows->addWidget(b, 1, column++);
   }
-  live_buttons_ << touch << go;
+  live_buttons_ << touch_ << go;
   connect(up, &QPushButton::clicked, this, [this] { moveSelected(-1); });
   connect(down, &QPushButton::clicked, this, [this] { moveSelected(+1); });
   connect(dup, &QPushButton::clicked, this, [this] {
@@ -310,7 +309,7 @@ QLayout* ProgramPanel::buildEditRows(QWidget* group) {
     const int row = selectedRow();
     if (model_->remove(row)) selectRow(std::min(row, model_->count() - 1));
   });
-  connect(touch, &QPushButton::clicked, this, [this] { touchUp(false); });
+  connect(touch_, &QPushButton::clicked, this, [this] { touchUp(false); });
   connect(touch_via_, &QPushButton::clicked, this, [this] { touchUp(true); });
   connect(go, &QPushButton::clicked, this, &ProgramPanel::gotoClicked);
   return rows;

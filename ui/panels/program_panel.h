@@ -139,7 +139,9 @@ class ProgramPanel : public PanelBase {
   // Every sample of the arm's stream while recording (Session::armSamplesArrived).
   void takeArmSamples(const xmate::arm::ArmSample* samples, int count);
   void showRecordingState();
-  // Cycles lost so far: the recorder's gaps plus what the arm's sample ring dropped since the start.
+  // While a path is being recorded, says so for `action` ("New", "Run", ...) and returns true.
+  bool refusedWhileRecording(const QString& action);
+  // Cycles lost so far: the larger of the recorder's gaps and what the arm's sample ring dropped since the start.
   uint64_t lostSinceStart() const;
   // The tool a PATH records in a program that has none yet (adoptTool); never refuses.
   void adoptToolForPath();

@@ -58,10 +58,7 @@ void ProgramPanel::newClicked() {
     showStatus(tr("New: a run is active — stop it first."), true);
     return;
   }
-  if (isRecordingPath()) {
-    showStatus(tr("New: a path is being recorded — press Stop recording path (F9) first."), true);
-    return;
-  }
+  if (refusedWhileRecording(tr("New"))) return;
   if (!maybeSaveProgram()) return;
   newProgram();
   showStatus(tr("New program."), false);
@@ -85,10 +82,7 @@ void ProgramPanel::openClicked() {
     showStatus(tr("Open: a run is active — stop it first."), true);
     return;
   }
-  if (isRecordingPath()) {
-    showStatus(tr("Open: a path is being recorded — press Stop recording path (F9) first."), true);
-    return;
-  }
+  if (refusedWhileRecording(tr("Open"))) return;
   if (!maybeSaveProgram()) return;
   const QString path = dialogs_.open_path();
   if (!path.isEmpty()) openFile(path);

@@ -89,6 +89,12 @@ void ProgramPanel::takeArmSamples(const xmate::arm::ArmSample* samples, int coun
   publishOverlay();
 }
 
+bool ProgramPanel::refusedWhileRecording(const QString& action) {
+  if (!isRecordingPath()) return false;
+  showStatus(tr("%1: a path is being recorded — press Stop recording path (F9) first.").arg(action), true);
+  return true;
+}
+
 uint64_t ProgramPanel::lostSinceStart() const {
   if (!path_recorder_) return 0;
   // A sample the ring dropped is also a gap in the cycles the recorder saw: the larger of the two

@@ -102,10 +102,7 @@ void ProgramPanel::startRun(const xmate::teach::Program& program, bool single_st
     showStatus(tr("%1: not connected — connect to a robot or the simulator first.").arg(action), true);
     return;
   }
-  if (isRecordingPath()) {
-    showStatus(tr("%1: a path is being recorded — press Stop recording path (F9) first.").arg(action), true);
-    return;
-  }
+  if (refusedWhileRecording(action)) return;
   xmate::teach::ExecutorOptions options = executorOptions();
   options.single_step = single_step;
   options.speed_override = speed_->value() / 100.0;

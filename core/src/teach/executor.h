@@ -207,7 +207,7 @@ class Executor {
   // PATH (executor_path.cpp): re-timed, checked, the lead-in joint move to its first sample, then
   // the timing streamed and the measured joints compared with the path.
   void runPath(const Program& program, size_t index, InstructionReport& report);
-  // The lead-in; false when it was stopped (the report says so).
+  // The lead-in joint move to a PATH's first sample; false when it was stopped (the report says so).
   bool leadIn(const Program& program, const Instruction& in, InstructionReport& report);
   // A PATH's timing streamed in joint position mode on an xMate (executor_motion.cpp) or as axis
   // corrections on a KUKA (executor_rsi.cpp), each cycle's measured joints into `recording`; both

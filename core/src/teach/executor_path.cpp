@@ -35,16 +35,6 @@ void PathRecording::add(double plan_time, const JointPoint& measured) {
   hints_.push_back(timing_.path_time[i] + f * (timing_.path_time[j] - timing_.path_time[i]));
 }
 
-namespace {
-
-double largestJointChange(const JointPoint& a, const JointPoint& b, int dof) {
-  double m = 0;
-  for (int j = 0; j < dof; ++j) m = std::max(m, std::abs(a[size_t(j)] - b[size_t(j)]));
-  return m;
-}
-
-}  // namespace
-
 void Executor::runPath(const Program& program, size_t index, InstructionReport& report) {
   const Instruction& in = program.instructions[index];
   const model::RobotSpec& spec = port_->spec();
@@ -64,12 +54,11 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
     ~WholeProgress() { from = 0, span = 1; }
   } whole{fraction_from_, fraction_span_};
   const JointPoint q_now = port_->read().q;
-  const double lead = largestJointChange(q_now, in.path.q.front(), spec.dof) > kPathLeadIn
-                          ? planning::planJointLine(spec, q_now, in.path.q.front(), in.speed * kSpeedShare)
-                                .profile.duration
-                          : 0.0;
+  const bool lead_in = largestJointChange(q_now, in.path.q.front(), spec.dof) > kPathLeadIn;
+  const double lead =
+      lead_in ? planning::planJointLine(spec, q_now, in.path.q.front(), in.speed * kSpeedShare).profile.duration : 0.0;
   fraction_span_ = lead + timing.duration > 0 ? lead / (lead + timing.duration) : 0.0;
-  if (!leadIn(program, in, report)) return;
+  if (lead_in && !leadIn(program, in, report)) return;
   fraction_from_ = fraction_span_;
   fraction_span_ = 1 - fraction_from_;
 
@@ -85,7 +74,6 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
 
 bool Executor::leadIn(const Program& program, const Instruction& in, InstructionReport& report) {
   const JointPoint& start = in.path.q.front();
-  if (largestJointChange(port_->read().q, start, port_->spec().dof) <= kPathLeadIn) return true;
   Instruction move;  // a MOVEJ to the first sample, at the PATH's speed
   move.type = InstructionType::kMoveJ;
   move.name = in.name;

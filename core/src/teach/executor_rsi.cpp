@@ -75,15 +75,11 @@ class RsiPort : public RobotPort {
   std::array<double, 16> tool_{};
 };
 
-// The joints (rad) between two precomputed samples, linearly.
-client::StallBridge::Vec gridAt(const client::JointSamples& grid, double t) {
-  const double x = std::clamp(t / kGridDt, 0.0, double(grid.size() - 1));
-  const size_t i = std::min(size_t(x), grid.size() - 1);
-  const size_t j = std::min(i + 1, grid.size() - 1);
-  const double f = x - double(i);
-  client::StallBridge::Vec q{};
-  for (size_t d = 0; d < 7; ++d) q[d] = grid[i][d] + f * (grid[j][d] - grid[i][d]);
-  return q;
+// The stream's newest state; MotionException when RSI is not running (no <Rob> yet).
+rsi::StreamState runningState(const rsi::JointStream& stream) {
+  rsi::StreamState state;
+  if (!stream.state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
+  return state;
 }
 
 // Calls a lambda each cycle (rsi::CycleMotion for the link's thread).
@@ -103,20 +99,17 @@ double maxDifference(const std::array<double, 6>& a, const std::array<double, 6>
   return m;
 }
 
-// How far apart the TCP is at two sets of axes (m). Real-time safe.
-double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6>& a, const std::array<double, 6>& b) {
-  std::array<double, 7> qa{}, qb{};
-  std::copy(a.begin(), a.end(), qa.begin());
-  std::copy(b.begin(), b.end(), qb.begin());
-  const std::array<double, 16> pa = model.GetCartPose(qa), pb = model.GetCartPose(qb);
-  return std::hypot(pa[3] - pb[3], pa[7] - pb[7], pa[11] - pb[11]);
-}
-
 // Six axes as seven joints (the seventh 0). Real-time safe.
 JointPoint widen(const std::array<double, 6>& q) {
   JointPoint out{};
   std::copy(q.begin(), q.end(), out.begin());
   return out;
+}
+
+// How far apart the TCP is at two sets of axes (m). Real-time safe.
+double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6>& a, const std::array<double, 6>& b) {
+  const std::array<double, 16> pa = model.GetCartPose(widen(a)), pb = model.GetCartPose(widen(b));
+  return std::hypot(pa[3] - pb[3], pa[7] - pb[7], pa[11] - pb[11]);
 }
 
 // The first sample of `grid` (joints every kGridDt of plan time) the RSI session cannot follow,
@@ -157,8 +150,7 @@ void Executor::runRsiMotion(const Program& program, const Instruction& in, Instr
   rsi::JointStream& stream = *stream_;
   const model::RobotSpec& spec = stream.spec();
   const model::ArmKinematics model = motionModel(program, spec, port_->toolFrame());
-  rsi::StreamState state;
-  if (!stream.state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
+  const rsi::StreamState state = runningState(stream);
   std::array<double, 7> q_now{};
   for (size_t i = 0; i < 6; ++i) q_now[i] = state.q_command[i];  // where the robot is being held
 
@@ -192,9 +184,7 @@ void Executor::runRsiMotion(const Program& program, const Instruction& in, Instr
 }
 
 void Executor::checkRsiPath(const PathTiming& timing, double rate_hz) {
-  rsi::StreamState state;
-  if (!stream_->state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
-  const GridProblem check = checkGrid(*stream_, timing.q, state.q_on);
+  const GridProblem check = checkGrid(*stream_, timing.q, runningState(*stream_).q_on);
   if (check.problem.empty()) return;
   const double t = timing.path_time[check.sample];
   char at[96];
@@ -205,9 +195,7 @@ void Executor::checkRsiPath(const PathTiming& timing, double rate_hz) {
 void Executor::streamRsiPath(const Program& program, const PathTiming& timing, PathRecording& recording,
                              InstructionReport& report) {
   const model::ArmKinematics model = motionModel(program, stream_->spec(), port_->toolFrame());
-  rsi::StreamState state;
-  if (!stream_->state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
-  streamRsiGrid(timing.q, kPathLimitShare, true, model, state.session, report, &recording);
+  streamRsiGrid(timing.q, kPathLimitShare, true, model, runningState(*stream_).session, report, &recording);
 }
 
 void Executor::streamRsiGrid(const client::JointSamples& grid, double share, bool joint_motion,
@@ -219,7 +207,7 @@ void Executor::streamRsiGrid(const client::JointSamples& grid, double share, boo
   TimeScaling scaling(override_.load(), safeScalingRate(share, accelOverVelocity(joint_motion, stream.spec())));
   const client::StallBridge::Limits limits = client::jointBridgeLimits(stream.spec(), share);
   const double braking = joint_motion ? 1.0 : kCartesianBrakingShare;
-  auto planAt = [&](double t) { return gridAt(grid, t); };
+  auto planAt = [&](double t) { return samplesAt(grid, kGridDt, t); };
   double plan_time = 0, max_joint_error = 0, max_tcp_error = 0;
   uint64_t cycles = 0;
   bool stopped = false;

@@ -25,6 +25,23 @@ std::string secondsText(double s) {
 
 }  // namespace
 
+double largestJointChange(const JointPoint& a, const JointPoint& b, int dof) {
+  double m = 0;
+  for (int j = 0; j < dof; ++j) m = std::max(m, std::abs(a[size_t(j)] - b[size_t(j)]));
+  return m;
+}
+
+JointPoint samplesAt(const std::vector<JointPoint>& q, double step, double t) {
+  if (q.empty()) return {};
+  const double x = std::clamp(std::isfinite(t) ? t / step : 0.0, 0.0, double(q.size() - 1));
+  const size_t i = std::min(size_t(x), q.size() - 1);
+  const size_t j = std::min(i + 1, q.size() - 1);
+  const double f = x - double(i);
+  JointPoint out{};
+  for (size_t d = 0; d < 7; ++d) out[d] = q[i][d] + f * (q[j][d] - q[i][d]);
+  return out;
+}
+
 // ---- PathSpline -------------------------------------------------------------------------------
 
 PathSpline::PathSpline(const std::vector<JointPoint>& q, double rate_hz, int dof)

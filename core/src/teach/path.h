@@ -24,6 +24,13 @@ struct JointPath {
   double duration() const { return q.size() < 2 ? 0.0 : double(q.size() - 1) / rate_hz; }
 };
 
+// The largest |a[j] - b[j]| over the model's `dof` joints (rad). Real-time safe.
+double largestJointChange(const JointPoint& a, const JointPoint& b, int dof);
+
+// The joints at time t (s; clamped to the samples) of samples taken every `step` seconds, linearly
+// between the two around it. Real-time safe.
+JointPoint samplesAt(const std::vector<JointPoint>& q, double step, double t);
+
 // What the program file allows (program_io.cpp checks it).
 inline constexpr double kMinPathRate = 1;      // Hz
 inline constexpr double kMaxPathRate = 1000;   // Hz

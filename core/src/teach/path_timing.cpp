@@ -255,16 +255,7 @@ PathTiming timePath(const PathSpline& spline, const model::RobotSpec& spec, doub
   return PathTimer(spline, spec, speed, step).run();
 }
 
-JointPoint timingAt(const PathTiming& timing, double t) {
-  if (timing.q.empty()) return {};
-  const double x = std::clamp(std::isfinite(t) ? t / timing.step : 0.0, 0.0, double(timing.q.size() - 1));
-  const size_t i = std::min(size_t(x), timing.q.size() - 1);
-  const size_t j = std::min(i + 1, timing.q.size() - 1);
-  const double f = x - double(i);
-  JointPoint q{};
-  for (size_t d = 0; d < 7; ++d) q[d] = timing.q[i][d] + f * (timing.q[j][d] - timing.q[i][d]);
-  return q;
-}
+JointPoint timingAt(const PathTiming& timing, double t) { return samplesAt(timing.q, timing.step, t); }
 
 namespace {
 

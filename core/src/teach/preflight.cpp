@@ -164,7 +164,7 @@ class Tracer {
   // The TCP along a joint move (straight in joint space), every 0.01 rad of the largest joint's
   // change.
   std::vector<std::array<double, 3>> jointMoveTcp(const std::array<double, 7>& from, const std::array<double, 7>& to) {
-    const int samples = std::clamp(int(std::ceil(largestChange(from, to) / 0.01)), 2, 1000);
+    const int samples = std::clamp(int(std::ceil(largestJointChange(from, to, spec_.dof) / 0.01)), 2, 1000);
     std::vector<std::array<double, 3>> tcp;
     for (int k = 0; k <= samples; ++k) {
       const double s = double(k) / samples;
@@ -173,12 +173,6 @@ class Tracer {
       tcp.push_back(translation(model_.GetCartPose(q)));
     }
     return tcp;
-  }
-
-  double largestChange(const std::array<double, 7>& a, const std::array<double, 7>& b) const {
-    double largest = 0;
-    for (int j = 0; j < spec_.dof; ++j) largest = std::max(largest, std::abs(b[j] - a[j]));
-    return largest;
   }
 
   // "joint 2" on an xMate, "A2" on a KUKA.
@@ -190,7 +184,7 @@ class Tracer {
   // its re-timing.
   void tracePath(const Instruction& in) {
     const JointPath& path = in.path;
-    const double change = largestChange(q_, path.q.front());
+    const double change = largestJointChange(q_, path.q.front(), spec_.dof);
     if (change > kPathLeadIn) {
       notice(fmt("first moves to the start of the path with a joint move (largest joint change %.1f deg)",
                  change * kDeg));
