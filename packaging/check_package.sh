@@ -42,6 +42,13 @@ run_programs() {
            include/xmate/robot.h; do
     [ -f "$root/$f" ] || { echo "missing from the installed tree: $f" >&2; exit 1; }
   done
+  # The client library carries no simulator: the simulators are librci-sim, linked into the programs.
+  lib=$(find "$root" -name 'librci-core.so.*.*' | head -n 1)
+  [ -n "$lib" ] || { echo "librci-core.so is missing from the installed tree" >&2; exit 1; }
+  if nm -DC --defined-only "$lib" | grep -q 'xmate::sim::'; then
+    echo "$lib exports the simulator (xmate::sim::); it belongs in librci-sim" >&2
+    exit 1
+  fi
 }
 
 step "the unpacked .deb"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// rci-studio: the operator window (issue 4). Parses the options, sets up the application (Fusion
+// rci-studio: the operator window. Parses the options, sets up the application (Fusion
 // style, icon, settings names), shows the main window and connects to the target.
 #include <QApplication>
 #include <QDir>

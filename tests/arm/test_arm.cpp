@@ -2,8 +2,9 @@
 // arm::Arm on both families with the same checks: the newest state arrives in SI units (its TCP
 // where the model puts it at its joints), every cycle comes through takeSamples in order and none
 // is lost, a joint motion streamed at the controller's cycle ends where it was sent, and digital
-// outputs and inputs reach the (simulated) controller. The xMate: RciArm on the lock-step RCI
-// simulator; the KUKA: RsiArm against the simulated KRC in lock-step, on loopback.
+// outputs and inputs reach the (simulated) controller; the range a motion can reach, and a TCP
+// motion where the controller has Cartesian control of its own. The xMate: RciArm on the lock-step
+// RCI simulator; the KUKA: RsiArm against the simulated KRC in lock-step, on loopback.
 #include <QtTest>
 
 #include <chrono>
@@ -54,6 +55,23 @@ class SwingAxis : public JointMotion {
   int cycles_;
   int calls_ = 0;
   std::array<double, 7> start_{};
+};
+
+// The TCP 2 cm down along base z on a smooth (cosine) profile of 500 cycles, from the measured pose.
+class LowerTcp : public CartesianMotion {
+ public:
+  bool command(const ArmState& now, std::array<double, 16>& pose) override {
+    if (calls_ == 0) start_ = now.tcp;
+    const double s = std::min(1.0, double(calls_) / 500);
+    pose = start_;
+    pose[11] -= 0.02 * 0.5 * (1 - std::cos(3.14159265358979323846 * s));
+    return ++calls_ > 500;
+  }
+  double startZ() const { return start_[11]; }
+
+ private:
+  int calls_ = 0;
+  std::array<double, 16> start_{};
 };
 
 // The checks every arm passes. `outputs` / `inputs` read and set the simulated controller's IO.
@@ -124,6 +142,20 @@ void TestArm::anXmate() {
   exercise(
       arm, [&](size_t k) -> bool { return server->status().sim.digital_out[k]; },
       [&](size_t k, bool level) { server->setDigitalInput(int(k), level); });
+  // The range a motion can reach: the model's joint range, in any session.
+  const MotionBounds bounds = arm.motionBounds();
+  QCOMPARE(bounds.lower[0], arm.spec().q_min[0]);
+  QCOMPARE(bounds.upper[6], arm.spec().q_max[6]);
+  QCOMPARE(bounds.session, 0u);
+  // A TCP motion through the controller's Cartesian control ends where it was sent.
+  QVERIFY(has(arm.capabilities(), Capability::kCartesianMotion));
+  LowerTcp lower;
+  arm.runCartesianMotion(lower);
+  ArmState state;
+  QVERIFY(waitFor([&] {
+    arm.latest(state);
+    return std::abs(state.tcp[11] - (lower.startZ() - 0.02)) < 1e-4;
+  }));
 }
 
 void TestArm::aKuka() {
@@ -159,6 +191,20 @@ void TestArm::aKuka() {
   QVERIFY(std::abs(lower[0] - std::max(s.q_on[0] - 90 * kDeg, arm.spec().q_min[0])) < 1e-9);
   QVERIFY(std::abs(upper[1] - std::min(s.q_on[1] + 90 * kDeg, arm.spec().q_max[1])) < 1e-9);
   QCOMPARE(lower[6], 0.0);
+  // The same as the arm's motion bounds, for this RSI session.
+  const MotionBounds bounds = arm.motionBounds();
+  QCOMPARE(bounds.lower[0], lower[0]);
+  QCOMPARE(bounds.upper[1], upper[1]);
+  QCOMPARE(bounds.session, s.session);
+  // No Cartesian control of its own: a TCP motion is refused, saying so.
+  QVERIFY(!has(c, Capability::kCartesianMotion));
+  LowerTcp tcp_motion;
+  try {
+    arm.runCartesianMotion(tcp_motion);
+    QFAIL("a TCP motion was accepted");
+  } catch (const std::runtime_error& e) {
+    QVERIFY2(QString(e.what()).contains("no Cartesian control"), e.what());
+  }
   krc.stop();
   arm.stop();
 }

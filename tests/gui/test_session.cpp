@@ -4,8 +4,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include <xmate/move.h>
+#include <algorithm>
 
+#include "arm/arm.h"
 #include "gui_test_support.h"
 #include "session/session.h"
 
@@ -17,20 +18,44 @@ using rci::ui::test::unusedPort;
 namespace {
 
 // Holds the joints still until the session asks to stop (or ~60 s of cycles pass), then finishes.
-void holdUntilStopped(const rci::ui::MotionToken& token, xmate::Robot& robot, int* cycles) {
-  using RCI::robot::StartMoveRequest;
-  robot.startMove(StartMoveRequest::ControllerMode::kJointPosition,
-                  StartMoveRequest::MotionGeneratorMode::kJointPosition);
-  std::array<double, 7> q_hold{};
-  bool first = true;
-  robot.Control([&](RCI::robot::RobotState state) -> xmate::JointPositions {
-    if (first) q_hold = state.q, first = false;
-    ++*cycles;
-    xmate::JointPositions command{q_hold};
-    if (token.stopRequested() || *cycles > 60000) return xmate::MotionFinished(command);
-    return command;
-  });
+class HoldUntilStopped : public xmate::arm::JointMotion {
+ public:
+  HoldUntilStopped(const rci::ui::MotionToken& token, int* cycles) : token_(token), cycles_(cycles) {}
+  bool command(const xmate::arm::ArmSample& now, std::array<double, 7>& q) override {
+    if (first_) hold_ = now.q_command, first_ = false;
+    ++*cycles_;
+    q = hold_;
+    return token_.stopRequested() || *cycles_ > 60000;
+  }
+
+ private:
+  const rci::ui::MotionToken& token_;
+  int* cycles_;
+  bool first_ = true;
+  std::array<double, 7> hold_{};
+};
+
+void holdUntilStopped(const rci::ui::MotionToken& token, xmate::arm::Arm& arm, int* cycles) {
+  HoldUntilStopped motion(token, cycles);
+  arm.runJointMotion(motion);
 }
+
+// Joint 1 by +0.05 rad in 1 s along a quintic (minimum-jerk) profile.
+class NudgeJointOne : public xmate::arm::JointMotion {
+ public:
+  bool command(const xmate::arm::ArmSample& now, std::array<double, 7>& q) override {
+    if (first_) start_ = now.q_command, first_cycle_ = now.cycle, first_ = false;
+    const double t = std::min(1.0, double(now.cycle - first_cycle_) * 1e-3);
+    q = start_;
+    q[0] += 0.05 * t * t * t * (10 - 15 * t + 6 * t * t);
+    return t >= 1.0;
+  }
+
+ private:
+  bool first_ = true;
+  uint64_t first_cycle_ = 0;
+  std::array<double, 7> start_{};
+};
 
 }  // namespace
 
@@ -133,11 +158,9 @@ void TestSession::runsMotion() {
   powerOn();
   QSignalSpy started(session_.get(), &Session::motionStarted);
   QSignalSpy finished(session_.get(), &Session::motionFinished);
-  session_->runMotion("MOVEJ", [](xmate::Robot& robot, const rci::ui::MotionToken&) {
-    const std::array<double, 7> start = robot.receiveRobotState().q;
-    std::array<double, 7> target = start;
-    target[0] += 0.05;
-    xmate::MOVEJ(0.5, start, target, robot);
+  session_->runArmMotion("MOVEJ", [](xmate::arm::Arm& arm, const rci::ui::MotionToken&) {
+    NudgeJointOne motion;
+    arm.runJointMotion(motion);
   });
   QCOMPARE(started.count(), 1);
   QVERIFY(session_->live().motion_running);
@@ -153,8 +176,8 @@ void TestSession::refusesSecondMotion() {
   int cycles = 0;
   QSignalSpy commands(session_.get(), &Session::commandFinished);
   QSignalSpy finished(session_.get(), &Session::motionFinished);
-  session_->runMotion("hold", [&](xmate::Robot& robot, const rci::ui::MotionToken& token) { holdUntilStopped(token, robot, &cycles); });
-  session_->runMotion("second", [](xmate::Robot&, const rci::ui::MotionToken&) {});
+  session_->runArmMotion("hold", [&](xmate::arm::Arm& arm, const rci::ui::MotionToken& token) { holdUntilStopped(token, arm, &cycles); });
+  session_->runArmMotion("second", [](xmate::arm::Arm&, const rci::ui::MotionToken&) {});
   QCOMPARE(commands.count(), 1);
   QCOMPARE(commands.first().at(0).toString(), QString("second"));
   QVERIFY(commands.first().at(2).toString().contains("already running"));
@@ -167,7 +190,7 @@ void TestSession::requestStopEndsMotion() {
   powerOn();
   int cycles = 0;
   QSignalSpy finished(session_.get(), &Session::motionFinished);
-  session_->runMotion("hold", [&](xmate::Robot& robot, const rci::ui::MotionToken& token) { holdUntilStopped(token, robot, &cycles); });
+  session_->runArmMotion("hold", [&](xmate::arm::Arm& arm, const rci::ui::MotionToken& token) { holdUntilStopped(token, arm, &cycles); });
   QTRY_VERIFY_WITH_TIMEOUT(session_->live().sim.motion_active, 20000);
   QVERIFY(!session_->stopRequested());
   session_->requestStop();
@@ -182,7 +205,7 @@ void TestSession::closesCleanly() {
   openSimulator();
   powerOn();
   int cycles = 0;
-  session_->runMotion("hold", [&](xmate::Robot& robot, const rci::ui::MotionToken& token) { holdUntilStopped(token, robot, &cycles); });
+  session_->runArmMotion("hold", [&](xmate::arm::Arm& arm, const rci::ui::MotionToken& token) { holdUntilStopped(token, arm, &cycles); });
   QSignalSpy closed(session_.get(), &Session::closed);
   QSignalSpy ticks(session_.get(), &Session::tick);
   session_->close();

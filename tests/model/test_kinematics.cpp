@@ -28,7 +28,7 @@ using namespace xmate::model::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// 100 000 per model (issue 2); the sanitizer build, ~20x slower, sets RCI_IK_ROUNDTRIP_SAMPLES lower.
+// 100 000 per model; the sanitizer build, ~20x slower, sets RCI_IK_ROUNDTRIP_SAMPLES lower.
 int roundTripSamples() {
   const char* text = std::getenv("RCI_IK_ROUNDTRIP_SAMPLES");
   const int n = text ? std::atoi(text) : 0;

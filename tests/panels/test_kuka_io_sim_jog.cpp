@@ -22,8 +22,8 @@
 
 #include "arm/rsi_arm.h"
 #include "gui_test_support.h"
+#include "jog/jog.h"
 #include "panels/fields.h"
-#include "panels/jog_motion.h"
 #include "panels/lamp.h"
 #include "session/session.h"
 #include "sim/krc_server.h"
@@ -73,7 +73,6 @@ class TestKukaIoSimJog : public QObject {
   void pushSetsWrench();
   void jointJogStopsAtCorrectionLimit();
   void cartesianJogMovesTheFlange();
-  void correctionLimitsNarrowJogLimits();
   void stopAnsweringStopsAndRestartsRsi();
 };
 
@@ -224,8 +223,8 @@ void TestKukaIoSimJog::jointJogStopsAtCorrectionLimit() {
   // It moved A1 the right way, up to 1 deg before the limit and not beyond, the other axes held.
   const double end = commanded();
   QVERIFY2(end > a1_start + 10 * kDeg, qPrintable(QString::number(end / kDeg)));
-  QVERIFY2(max_commanded <= limit - kJogLimitMargin + 1e-9, qPrintable(QString::number(max_commanded / kDeg)));
-  QVERIFY2(end > limit - kJogLimitMargin - 2 * kDeg, qPrintable(QString::number(end / kDeg)));
+  QVERIFY2(max_commanded <= limit - xmate::jog::kJogLimitMargin + 1e-9, qPrintable(QString::number(max_commanded / kDeg)));
+  QVERIFY2(end > limit - xmate::jog::kJogLimitMargin - 2 * kDeg, qPrintable(QString::number(end / kDeg)));
   QVERIFY2(max_measured <= limit, qPrintable(QString::number(max_measured / kDeg)));
   QVERIFY(session_->rsiArm()->stream().state(s));
   for (int i = 1; i < 6; ++i) QVERIFY(std::abs(s.q_command[size_t(i)] - s.q_on[size_t(i)]) < 1e-9);
@@ -275,41 +274,6 @@ void TestKukaIoSimJog::cartesianJogMovesTheFlange() {
   QVERIFY2(angle(start, end) > 0.03, qPrintable(QString::number(angle(start, end))));
   QVERIFY2(std::hypot(end[3] - start[3], end[7] - start[7], end[11] - start[11]) < 0.003,
            qPrintable(QString::number(std::hypot(end[3] - start[3], end[7] - start[7], end[11] - start[11]))));
-}
-
-void TestKukaIoSimJog::correctionLimitsNarrowJogLimits() {
-  // The intersection alone: joint range vs. +-10 deg around q_on = 30 deg.
-  const auto& spec = session_->spec();
-  const JointLimitsRad joints = jogLimits(spec, false, {}, {});
-  xmate::rsi::AxisCorrectionLimits corr;
-  for (size_t i = 0; i < 6; ++i) {
-    corr.lower[i] = -10 * kDeg;
-    corr.upper[i] = 10 * kDeg;
-  }
-  std::array<double, 6> q_on{};
-  q_on[0] = 30 * kDeg;
-  q_on[1] = spec.q_min[1] + 2 * kDeg;  // near the joint's own lower limit: that one stays
-  const JointLimitsRad l = withinCorrectionLimits(joints, q_on, corr);
-  QVERIFY(std::abs(l.upper[0] - (40 * kDeg - kJogLimitMargin)) < 1e-12);
-  QVERIFY(std::abs(l.lower[0] - (20 * kDeg + kJogLimitMargin)) < 1e-12);
-  QCOMPARE(l.lower[1], joints.lower[1]);
-  QVERIFY(std::abs(l.upper[1] - (q_on[1] + 10 * kDeg - kJogLimitMargin)) < 1e-12);
-
-  // The jog at the RSI cycle (4 ms) within them: brakes before the limit, ends at rest.
-  JogFlags flags;
-  JointJog jog(spec, 0, +1, 1.0, l, flags, 0.004);
-  std::array<double, 7> start{}, q{};
-  start[0] = q_on[0];
-  bool last = false;
-  double max_q = -1e9;
-  for (uint64_t cycle = 1; cycle < 5000 && !last; ++cycle) {
-    if (cycle == 3000) flags.held.store(false);
-    last = jog.advance(cycle, start, q);
-    max_q = std::max(max_q, q[0]);
-  }
-  QVERIFY(last);
-  QVERIFY(max_q <= l.upper[0] + 1e-9);
-  QVERIFY(max_q > l.upper[0] - 0.5 * kDeg);
 }
 
 void TestKukaIoSimJog::stopAnsweringStopsAndRestartsRsi() {

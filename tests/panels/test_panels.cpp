@@ -26,7 +26,6 @@
 
 #include "model/robot_spec.h"
 #include "panels/fields.h"
-#include "panels/jog_motion.h"
 #include "panels/lamp.h"
 #include "panels/tool_panel.h"
 #include "session/session.h"
@@ -124,9 +123,6 @@ class TestPanels : public QObject {
   void dragTogglesGuiding();
   void jogMovesJoint();
   void jogMovesTcp();
-  void jointJogAdvancesByElapsedCycles();
-  void jogsKeepGoingThroughLostStates();
-  void jointJogBrakesBeforeLimit();
   void stopsShowInSafetyPanel();
   void simulatorPanelDisabledWithoutSimulator();
   void sixAxisModelHidesSeventhJoint();
@@ -160,7 +156,7 @@ void TestPanels::cleanupTestCase() {
 }
 
 void TestPanels::panelsAndNames() {
-  // 12 + Program (issue 5) + the KUKA ones: hand guiding by the force sensor, Force sensor, RSI.
+  // 12 + Program + the KUKA ones: hand guiding by the force sensor, Force sensor, RSI.
   QCOMPARE(int(panels_.size()), 16);
   std::set<QString> ids;
   for (const auto& p : panels_) {
@@ -427,127 +423,6 @@ void TestPanels::jogMovesTcp() {
   QString failure;
   QVERIFY2(holdJog(down, [&] { return session_->live().state.toolTobase_pos_m[11] < z0 - 0.01; }, &failure),
            qPrintable(failure));
-}
-
-void TestPanels::jointJogBrakesBeforeLimit() {
-  // The command sequence on a perfectly tracking arm: within the SPEC rate limits, stops before the
-  // limit while held, ends with MotionFinished at rest after release.
-  const auto& spec = xmate::model::robotSpec(xmate::XMATE7_PRO);
-  std::array<double, 7> lower_deg{}, upper_deg{};
-  for (int i = 0; i < 7; ++i) {
-    lower_deg[i] = -90;
-    upper_deg[i] = 30;
-  }
-  const JointLimitsRad limits = jogLimits(spec, true, lower_deg, upper_deg);
-  JogFlags flags;
-  JointJog jog(spec, 1, +1, 1.0, limits, flags);
-  RCI::robot::RobotState state{};
-  state.q[1] = 0.0;
-  double v_prev = 0, a_prev = 0, q_prev = 0;
-  double max_v = 0, max_a = 0, max_j = 0;
-  bool finished = false;
-  for (int cycle = 0; cycle < 20000 && !finished; ++cycle) {
-    if (cycle == 8000) flags.held.store(false);
-    const xmate::JointPositions cmd = jog.next(state);
-    finished = cmd.motion_finished;
-    const double v = (cmd.q[1] - q_prev) / 0.001, a = (v - v_prev) / 0.001, j = (a - a_prev) / 0.001;
-    if (cycle > 0) {
-      max_v = std::max(max_v, std::abs(v));
-      max_a = std::max(max_a, std::abs(a));
-      max_j = std::max(max_j, std::abs(j));
-    }
-    QVERIFY(cmd.q[1] <= limits.upper[1] + 1e-9);
-    q_prev = cmd.q[1];
-    v_prev = v;
-    a_prev = a;
-    state.q = cmd.q;
-  }
-  QVERIFY(finished);
-  QVERIFY(q_prev > limits.upper[1] - 0.01);  // it got close to the limit
-  QVERIFY(max_v <= spec.dq_max[1] + 1e-9);
-  QVERIFY(max_a <= spec.ddq_max[1] + 1e-6);
-  QVERIFY(max_j <= spec.jerk_max[1]);
-  QVERIFY(std::abs(v_prev) < 1e-9);
-}
-
-void TestPanels::jointJogAdvancesByElapsedCycles() {
-  // A lost state (message_id 150 never arrives) must not shift the plan: at message_id 151 the jog
-  // commands what it would have without the loss -- the controller extrapolated the lost command.
-  const auto& spec = xmate::model::robotSpec(xmate::XMATE7_PRO);
-  const JointLimitsRad limits = jogLimits(spec, false, {}, {});
-  JogFlags flags_a, flags_b;
-  JointJog every(spec, 0, +1, 0.5, limits, flags_a), lossy(spec, 0, +1, 0.5, limits, flags_b);
-  RCI::robot::RobotState state{};
-  xmate::JointPositions a{}, b{};
-  for (uint64_t id = 100; id <= 300; ++id) {
-    state.message_id = id;
-    a = every.next(state);
-    if (id != 150) b = lossy.next(state);
-    if (id == 151) QCOMPARE(b.q[0], a.q[0]);
-  }
-  QVERIFY(a.q[0] > 0.001);  // it was moving
-  QCOMPARE(b.q[0], a.q[0]);
-}
-
-// The joint and the Cartesian jog against the simulator on its real-time clock while it drops 2 % of
-// its states (a third in pairs) and three in a row now and then: each jog ramps up, runs, ramps down
-// after the release and ends without an error bit.
-void TestPanels::jogsKeepGoingThroughLostStates() {
-  using CM = RCI::robot::StartMoveRequest::ControllerMode;
-  using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
-  xmate::sim::ServerConfig config;
-  config.bind_ip = "127.0.0.1";
-  config.port = 0;
-  config.clock = xmate::sim::ClockMode::kRealTime;
-  xmate::sim::Server server(config);
-  server.start();
-  xmate::sim::StateLoss loss;
-  loss.probability = 0.02;
-  loss.pair_share = 0.3;
-  loss.seed = 5;
-  server.setStateLoss(loss);
-  xmate::Robot robot("127.0.0.1", server.port(), xmate::XMATE7_PRO);
-  robot.setMotorPower(1);
-  const auto& spec = xmate::model::robotSpec(xmate::XMATE7_PRO);
-  const JointLimitsRad limits = jogLimits(spec, false, {}, {});
-  auto releaseLater = [&server](JogFlags& flags) {
-    return std::thread([&server, &flags] {
-      for (int k = 0; k < 4; ++k) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
-        server.dropStates(3);
-      }
-      flags.held.store(false);
-    });
-  };
-  for (int direction : {+1, -1}) {
-    JogFlags flags;
-    JointJog jog(spec, 0, direction, 1.0, limits, flags);
-    std::thread release = releaseLater(flags);
-    try {
-      robot.startMove(CM::kJointPosition, MM::kJointPosition);
-      robot.Control(xmate::JointControl([&jog](RCI::robot::RobotState s) { return jog.next(s); }));
-    } catch (const std::exception& e) {
-      release.join();
-      QFAIL(e.what());
-    }
-    release.join();
-  }
-  // Towards the base, sideways and about z: away from the stretched arm, where a Cartesian jog at full
-  // speed runs into the joint velocity limits whether states are lost or not.
-  for (const auto& [axis, direction] : {std::pair{0, -1}, std::pair{1, +1}, std::pair{5, +1}}) {
-    JogFlags flags;
-    CartesianJog jog(axis, direction, 1.0, spec.dof, limits, flags);
-    std::thread release = releaseLater(flags);
-    try {
-      robot.startMove(CM::kCartesianPosition, MM::kCartesianPosition);
-      robot.Control(xmate::CartesianControl([&jog](RCI::robot::RobotState s) { return jog.next(s); }));
-    } catch (const std::exception& e) {
-      release.join();
-      QFAIL(qPrintable(QStringLiteral("Cartesian jog along axis %1: %2").arg(axis).arg(e.what())));
-    }
-    release.join();
-  }
-  QVERIFY(server.status().counters.states_dropped > 10);
 }
 
 void TestPanels::stopsShowInSafetyPanel() {

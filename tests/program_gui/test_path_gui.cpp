@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// test_path_gui: teach by demonstration (issue 13) through the Program panel's widgets against the
+// test_path_gui: teach by demonstration through the Program panel's widgets against the
 // session's embedded lock-step xMate simulator -- drag the arm with a varying external force while
 // recording a PATH (button, F9, DI trigger), check what the table, the 3D overlay and the status say,
 // replay it at 100 %, 50 % and 10 % of the demonstrated pace, refuse a recording where nothing moved,

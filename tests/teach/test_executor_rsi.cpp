@@ -284,8 +284,17 @@ void TestExecutorRsi::pathIsReplayedOnTheSimulatedKrc() {
   Program p = kukaProgram();
   p.instructions.push_back(pathInstruction(path, 1.0, "sweep"));
   p.instructions.push_back(pathInstruction(path, 0.5, "again"));
+  // The fastest joint of the demonstration (rad/s) at its own pace.
+  double fastest = 0;
+  for (size_t k = 1; k < path.q.size(); ++k) fastest = std::max(fastest, maxDifference(path.q[k], path.q[k - 1]) * path.rate_hz);
+  const uint64_t late_before = cell.krc->krc().status().answers_late;
   Executor executor;
   const RunReport report = executor.run(*cell.arm, p, {});
+  // An answer this machine did not send in time (a busy or sanitised test box) leaves the arm one
+  // RSI cycle behind the path for that cycle: a real deviation, which the report shows and the
+  // tolerance allows (the fastest joint's travel in one cycle, per late answer).
+  const uint64_t late = cell.krc->krc().status().answers_late - late_before;
+  const double allowance = 1e-3 + double(late) * fastest * cell.arm->cycleSeconds();
   QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
   QCOMPARE(report.notices.size(), size_t(1));
   QVERIFY2(report.notices[0].message ==
@@ -294,11 +303,12 @@ void TestExecutorRsi::pathIsReplayedOnTheSimulatedKrc() {
            report.notices[0].message.c_str());
   for (size_t i = 0; i < 2; ++i) {
     const InstructionReport& r = report.instructions[i];
-    qInfo("%s: %.3f s (nominal %.3f s), lead-in %.3f s, deviation %.3f mrad / %.3f mm", i ? "again" : "sweep",
-          r.duration, r.nominal_duration, r.lead_in, r.path_joint_deviation * 1e3, r.path_tcp_deviation * 1e3);
+    qInfo("%s: %.3f s (nominal %.3f s), lead-in %.3f s, deviation %.3f mrad / %.3f mm (%llu late answers in the run)",
+          i ? "again" : "sweep", r.duration, r.nominal_duration, r.lead_in, r.path_joint_deviation * 1e3,
+          r.path_tcp_deviation * 1e3, static_cast<unsigned long long>(late));
     QCOMPARE(r.status, InstructionStatus::kDone);
-    QVERIFY2(r.path_joint_deviation > 0 && r.path_joint_deviation < 1e-3,
-             qPrintable(QString::number(r.path_joint_deviation)));
+    QVERIFY2(r.path_joint_deviation > 0 && r.path_joint_deviation < allowance,
+             qPrintable(QString("%1 rad (allowed %2 with %3 late answers)").arg(r.path_joint_deviation).arg(allowance).arg(late)));
     QVERIFY(r.duration > 0.98 * r.nominal_duration && r.duration < 1.05 * r.nominal_duration + 0.05);
     QVERIFY(maxDifference(r.q, path.q.back()) < 1e-4);
     QVERIFY(r.settled);

@@ -12,8 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
-#include "arm/rsi_arm.h"
+#include "arm/arm.h"
 #include "guide/admittance.h"
 #include "guide/ft_source.h"
 #include "model/arm_kinematics.h"
@@ -192,9 +193,13 @@ void ForceGuidePanel::start() {
   saveValue(QStringLiteral("axes"), axes_->currentData());
 
   auto guide = std::make_shared<ForceGuide>(*sensor, arm->spec(), arm->cycleSeconds(), parameters, tool);
-  std::array<double, 7> lower{}, upper{};
-  if (xmate::arm::RsiArm* rsi = session().rsiArm(); rsi && rsi->stream().reachableBounds(lower, upper))
-    guide->guide.setJointBounds(lower, upper);  // within the correction limits around the RSI start pose
+  if (xmate::arm::has(arm->capabilities(), xmate::arm::Capability::kCorrectionLimits)) {
+    try {  // within the correction limits around the RSI start pose
+      const xmate::arm::MotionBounds bounds = arm->motionBounds();
+      guide->guide.setJointBounds(bounds.lower, bounds.upper);
+    } catch (const std::runtime_error&) {  // RSI not running yet: the motion itself will say so
+    }
+  }
   guide_ = guide;
   guiding_ = true;
   message_->clearMessage();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Jog panel: the buttons and speed slider; the motion itself is in jog_motion (real-time side).
+// Jog panel: the buttons and speed slider; the motion itself is in core's jog (real-time side).
 #include "panels/jog_panel.h"
 
 #include <stdexcept>
@@ -12,15 +12,14 @@
 #include <QPushButton>
 #include <QSlider>
 
-#include "arm/rsi_arm.h"
+#include "jog/jog.h"
 #include "panels/fields.h"
 #include "model/arm_kinematics.h"
-#include "panels/jog_motion.h"
 #include "session/session.h"
 
 namespace rci::ui {
 
-using RCI::robot::StartMoveRequest;
+using namespace xmate::jog;
 
 namespace {
 
@@ -39,25 +38,6 @@ void watchStop(JogFlags& flags, const MotionToken& token) {
     flags.window_silent.store(true, std::memory_order_relaxed);
   }
 }
-
-// The Cartesian jog of an arm: the admittance guide pushed by JogPush, told to brake and end when the
-// button is released, a stop is asked for or the window falls silent (watch sets the flags).
-class CartesianArmJog : public xmate::arm::JointMotion {
- public:
-  CartesianArmJog(xmate::guide::AdmittanceGuide& guide, const JogFlags& flags, std::function<void()> watch)
-      : guide_(guide), flags_(flags), watch_(std::move(watch)) {}
-  bool command(const xmate::arm::ArmSample& now, std::array<double, 7>& q) override {
-    watch_();
-    if (!flags_.held.load(std::memory_order_relaxed) || flags_.stop.load(std::memory_order_relaxed))
-      guide_.requestStop();
-    return guide_.command(now, q);
-  }
-
- private:
-  xmate::guide::AdmittanceGuide& guide_;
-  const JogFlags& flags_;
-  std::function<void()> watch_;
-};
 
 const char* const kWindowSilent =
     "the jog stopped because the window did not respond for more than 150 ms (it could not have seen the button's "
@@ -173,8 +153,8 @@ double JogPanel::speedFraction() const { return speed_->value() / 100.0; }
 
 void JogPanel::press(bool cartesian, int axis, int direction, const QString& what) {
   if (!isOpen()) return;
-  xmate::arm::Arm* arm = session().arm();
-  if (!arm) return;
+  xmate::arm::Arm* open_arm = session().arm();
+  if (!open_arm) return;
   if (active_) active_->held.store(false);  // a press without release (focus lost): end that jog
   auto flags = std::make_shared<JogFlags>();
   active_ = flags;
@@ -182,74 +162,36 @@ void JogPanel::press(bool cartesian, int axis, int direction, const QString& wha
   const OperatorSettings& o = session().operatorSettings();
   const JointLimitsRad limits = jogLimits(model, o.soft_limits_enabled, o.soft_lower_deg, o.soft_upper_deg);
   const double speed = speedFraction();
-  const double cycle_s = arm->cycleSeconds();
   const QString label = title() + QStringLiteral(": ") + what;
   showStatus(tr("jog %1 ...").arg(what), false);
-  if (!session().robot()) {
-    pressArm(cartesian, axis, direction, label, limits, speed);
-    return;
-  }
-  // The job runs on the session's motion worker; the callbacks on the client's real-time thread.
-  // GUI -> real time: the atomics of JogFlags (shared_ptr keeps them alive for both sides).
-  session().runMotion(label, [=, &model](xmate::Robot& robot, const MotionToken& token) {
-    auto stop_watch = [flags, &token] { watchStop(*flags, token); };
-    if (cartesian) {
-      CartesianJog jog(axis, direction, speed, model.dof, limits, *flags);
-      robot.startMove(StartMoveRequest::ControllerMode::kCartesianPosition,
-                      StartMoveRequest::MotionGeneratorMode::kCartesianPosition);
-      robot.Control(xmate::CartesianControl([&jog, &stop_watch](RCI::robot::RobotState state) {
-        stop_watch();
-        return jog.next(state);
-      }));
-    } else {
-      JointJog jog(model, axis, direction, speed, limits, *flags, cycle_s);
-      robot.startMove(StartMoveRequest::ControllerMode::kJointPosition,
-                      StartMoveRequest::MotionGeneratorMode::kJointPosition);
-      robot.Control(xmate::JointControl([&jog, &stop_watch](RCI::robot::RobotState state) {
-        stop_watch();
-        return jog.next(state);
-      }));
-    }
-    if (flags->window_silent.load()) throw std::runtime_error(kWindowSilent);
-  });
-}
-
-void JogPanel::pressArm(bool cartesian, int axis, int direction, const QString& label, const JointLimitsRad& limits,
-                        double speed) {
-  std::shared_ptr<JogFlags> flags = active_;
-  const auto& model = spec();
-  // Valid while the job runs: the session keeps its link until the motion worker has ended.
-  xmate::arm::RsiArm* rsi = session().rsiArm();
+  // The job runs on the session's motion worker; the motions' command() on the arm's real-time
+  // thread. GUI -> real time: the atomics of JogFlags (shared_ptr keeps them alive for both sides).
   session().runArmMotion(label, [=, &model](xmate::arm::Arm& arm, const MotionToken& token) {
-    JointLimitsRad within = limits;
-    uint32_t rsi_session = 0;
-    if (rsi) {
-      // RSI moves the axes only within the context's correction limits around where it was
-      // switched on: the jog brakes before them.
-      xmate::rsi::StreamState s;
-      if (!rsi->stream().state(s))
-        throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived; start the KRL program (RSI_ON, "
-                                 "RSI_MOVECORR) on the robot");
-      within = withinCorrectionLimits(limits, s.q_on, rsi->stream().limits());
-      rsi_session = s.session;
-    }
+    // Within what the arm can reach now: on RSI, the context's correction limits around where it
+    // was switched on -- the jog brakes before them.
+    const xmate::arm::MotionBounds bounds = arm.motionBounds();
+    const JointLimitsRad within = withinBounds(limits, bounds, model.dof);
     std::function<void()> stop_watch = [flags, &token] { watchStop(*flags, token); };
-    if (cartesian) {
+    const xmate::arm::Capabilities caps = arm.capabilities();
+    if (cartesian && xmate::arm::has(caps, xmate::arm::Capability::kCartesianMotion)) {
+      CartesianJog jog(axis, direction, speed, model.dof, within, *flags);
+      CartesianJogMotion motion(jog, stop_watch);
+      arm.runCartesianMotion(motion);
+    } else if (cartesian) {
       const xmate::guide::GuideParameters parameters = cartesianJogParameters(axis, speed);
       const JogPush push(arm, axis, direction, parameters);
       xmate::guide::AdmittanceGuide guide(xmate::model::ArmKinematics(model), push, arm.cycleSeconds(), parameters);
       guide.setJointBounds(within.lower, within.upper);
-      CartesianArmJog motion(guide, *flags, stop_watch);
+      GuidedCartesianJogMotion motion(guide, *flags, stop_watch);
       arm.runJointMotion(motion);
-      if (flags->window_silent.load()) throw std::runtime_error(kWindowSilent);
-      return;
+    } else {
+      JointJog jog(model, axis, direction, speed, within, *flags, arm.cycleSeconds());
+      JointJogMotion motion(jog, stop_watch, bounds.session);
+      arm.runJointMotion(motion);
+      if (motion.sessionChanged())
+        throw std::runtime_error("RSI was switched on again just as the jog started (a new RSI session); press and "
+                                 "hold the button again");
     }
-    JointJog jog(model, axis, direction, speed, within, *flags, arm.cycleSeconds());
-    JointJogMotion motion(jog, stop_watch, rsi_session);
-    arm.runJointMotion(motion);
-    if (motion.sessionChanged())
-      throw std::runtime_error("RSI was switched on again just as the jog started (a new RSI session); press and "
-                               "hold the button again");
     if (flags->window_silent.load()) throw std::runtime_error(kWindowSilent);
   });
 }
@@ -286,10 +228,10 @@ void JogPanel::sessionOpened() {
   showModel();
   // The Cartesian jog streams poses to the xMate's Cartesian control; on other arms it moves the
   // flange (there is no tool on a KUKA over RSI) through the joints.
-  cartesian_group_->setToolTip(session().robot() ? QString()
+  const xmate::arm::Capabilities caps = session().arm() ? session().arm()->capabilities() : 0;
+  cartesian_group_->setToolTip(xmate::arm::has(caps, xmate::arm::Capability::kCartesianMotion) ? QString()
                                                  : tr("Moves the flange along or about a base axis; it holds where an "
                                                       "axis reaches the range RSI allows or the arm its reach."));
-  const xmate::arm::Capabilities caps = session().arm() ? session().arm()->capabilities() : 0;
   QString hint = tr("Hold a button to move; release to stop.");
   if (xmate::arm::has(caps, xmate::arm::Capability::kPowerControl)) hint += tr(" Motors must be on.");
   if (xmate::arm::has(caps, xmate::arm::Capability::kCorrectionLimits))

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Jog panel: press-and-hold buttons for joint +/- per joint and Cartesian +/- (x, y, z, rx, ry, rz)
-// with a speed slider. Each press runs one ramped jog motion: on an xMate through
-// Session::runMotion(); the joint jog of any other arm (a KUKA over RSI) through
-// Session::runArmMotion(), within the RSI context's correction limits. The Cartesian jog needs the
-// xMate's Cartesian control and is disabled otherwise.
+// with a speed slider. Each press runs one ramped jog motion on the arm (Session::runArmMotion),
+// within what the arm can reach (on RSI, the context's correction limits): the Cartesian jog through
+// the controller's Cartesian control where the arm has one (Capability::kCartesianMotion), through
+// the admittance guide otherwise.
 #pragma once
 
 #include <QList>
@@ -17,10 +17,12 @@ class QLabel;
 class QPushButton;
 class QSlider;
 
-namespace rci::ui {
-
+namespace xmate::jog {
 struct JogFlags;
 struct JointLimitsRad;
+}  // namespace xmate::jog
+
+namespace rci::ui {
 
 class JogPanel : public PanelBase {
   Q_OBJECT
@@ -41,11 +43,6 @@ class JogPanel : public PanelBase {
   QPushButton* makeJogButton(const QString& name, const QString& text, const QString& tip, bool cartesian, int axis,
                              int direction, QWidget* parent);
   void press(bool cartesian, int axis, int direction, const QString& what);
-  // The joint jog on the session's arm::Arm (runArmMotion).
-  // A jog on an arm::Arm (a KUKA): an axis (JointJog) or the flange along / about a base axis (JogPush
-  // through the admittance guide), within the RSI correction limits.
-  void pressArm(bool cartesian, int axis, int direction, const QString& label, const JointLimitsRad& limits,
-                double speed);
   void release();
   void showModel();
   double speedFraction() const;
@@ -57,7 +54,7 @@ class JogPanel : public PanelBase {
   QWidget* cartesian_group_ = nullptr;
   QLabel* hint_ = nullptr;
   std::array<QLabel*, 7> angles_{};
-  std::shared_ptr<JogFlags> active_;  // the jog whose button is held (or ramping down)
+  std::shared_ptr<xmate::jog::JogFlags> active_;  // the jog whose button is held (or ramping down)
 };
 
 }  // namespace rci::ui

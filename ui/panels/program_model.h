@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// ProgramModel: the Program panel's table of instructions (issue 5) -- owns the teach::Program being
+// ProgramModel: the Program panel's table of instructions -- owns the teach::Program being
 // edited and offers the edits the panel needs (insert, delete, move, duplicate, type, speed, name,
 // touch-up of target or via, logic parameters), drag & drop reordering, the highlight of the instruction that runs,
 // and what the last run reported for each instruction (tooltip).

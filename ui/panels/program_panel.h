@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Program panel (issue 5, "In the window"): teach by recording waypoints (button, F9, DI trigger) as
-// MOVEJ / MOVEL / MOVEC or a demonstrated path as PATH (issue 13), edit the instruction list, go to a waypoint, run / pause / resume / step /
-// stop the program with the teach executor (teach/executor.h) through Session::runMotion, open and
+// Program panel: teach by recording waypoints (button, F9, DI trigger) as
+// MOVEJ / MOVEL / MOVEC or a demonstrated path as PATH, edit the instruction list, go to a waypoint, run / pause / resume / step /
+// stop the program with the teach executor (teach/executor.h) through Session::runArmMotion, open and
 // save program files, and show the waypoints and the planned path in the 3D view (programOverlay).
 #pragma once
 
@@ -264,7 +264,7 @@ class ProgramPanel : public PanelBase {
     xmate::teach::RunReport report;
   };
   std::shared_ptr<RunSlot> run_slot_ = std::make_shared<RunSlot>();
-  QString run_label_;      // the runMotion label of the running job ("" when none)
+  QString run_label_;      // the runArmMotion label of the running job ("" when none)
   bool running_ = false;
   bool goto_run_ = false;  // the running job is a go-to (its progress is not the program's)
   xmate::teach::RunReport last_report_;

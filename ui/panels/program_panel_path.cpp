@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Program panel: teach by demonstration (issue 13) -- recording the path the operator guides the arm
+// Program panel: teach by demonstration -- recording the path the operator guides the arm
 // along as a PATH instruction (every cycle of the arm's sample stream, shown live in the 3D view),
 // and the last run's result per instruction in words (a PATH's deviation from the demonstration and
 // how much the robot's limits slowed it).

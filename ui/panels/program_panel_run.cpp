@@ -14,12 +14,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <optional>
 
 #include <xmate/model.h>
 
 #include "arm/arm.h"
-#include "arm/rsi_arm.h"
 #include "model/arm_kinematics.h"
 #include "panels/fields.h"
 #include "panels/lamp.h"
@@ -155,9 +155,18 @@ xmate::teach::TraceOptions ProgramPanel::traceOptions() const {
   options.soft_upper = e.soft_upper;
   options.has_box = e.has_box;
   options.box = e.box;
-  // On a KUKA the joints a PATH may reach: the RSI start pose plus the correction limits.
-  if (xmate::arm::RsiArm* rsi = session().rsiArm())
-    options.has_joint_bounds = rsi->stream().reachableBounds(options.joint_lower, options.joint_upper);
+  // Where motions are held within correction limits (RSI), the joints a PATH may reach: the start
+  // pose plus those limits.
+  const xmate::arm::Arm* arm = session().arm();
+  if (arm && xmate::arm::has(arm->capabilities(), xmate::arm::Capability::kCorrectionLimits)) {
+    try {
+      const xmate::arm::MotionBounds bounds = arm->motionBounds();
+      options.joint_lower = bounds.lower;
+      options.joint_upper = bounds.upper;
+      options.has_joint_bounds = true;
+    } catch (const std::runtime_error&) {  // RSI not running yet: nothing to check against
+    }
+  }
   return options;
 }
 

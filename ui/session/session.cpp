@@ -514,15 +514,6 @@ void Session::runOnArm(const QString& label, ArmJob job) {
   });
 }
 
-void Session::runMotion(const QString& label, MotionJob job) {
-  if (impl_->link && !impl_->link->robot) {
-    emit commandFinished(label, false, QStringLiteral("this works on an xMate only; %1 is connected").arg(impl_->target.describe()));
-    return;
-  }
-  xmate::Robot* robot = impl_->link ? impl_->link->robot.get() : nullptr;
-  impl_->startMotion(label, [robot, job = std::move(job)](const MotionToken& token) { job(*robot, token); });
-}
-
 void Session::runArmMotion(const QString& label, ArmMotionJob job) {
   xmate::arm::Arm* arm = impl_->link ? impl_->link->arm : nullptr;
   impl_->startMotion(label, [arm, job = std::move(job)](const MotionToken& token) { job(*arm, token); });

@@ -5,7 +5,7 @@
 // the built-in KUKA simulator, the simulated KRC and sensor. Both families are reachable as one
 // arm::Arm. Widgets never touch the network: they read live() on tick(), receive samples by
 // samplesArrived() / armSamplesArrived(), and hand commands to run() / runOnArm() and motions to
-// runMotion() / runArmMotion(), which execute on worker threads.
+// runArmMotion(), which execute on worker threads.
 #pragma once
 
 #include <QObject>
@@ -88,7 +88,7 @@ struct LiveState {
   int safety_stop = 1;                 // 1 none, 2 ESTOP, 3 GSTOP (polled, ~5 Hz)
   std::array<bool, 6> digital_in{};    // polled, ~5 Hz
   std::array<bool, 6> digital_out{};   // as last set through run() (the robot cannot report it)
-  bool motion_running = false;         // a runMotion() job is queued or executing
+  bool motion_running = false;         // a runArmMotion() job is queued or executing
   // The arm is coming to rest on its own after a stop, a recovered error or the end of hand guiding
   // (xmate::client::stoppingOnItsOwn): motions wait, the window says "stopping ...". xMate only.
   bool stopping = false;
@@ -131,7 +131,7 @@ struct OperatorSettings {
   std::array<double, 7> soft_upper_deg{}, soft_lower_deg{};
 };
 
-// What the Program panel (issue 5) shows in the 3D view: the taught waypoints (TCP positions in the
+// What the Program panel shows in the 3D view: the taught waypoints (TCP positions in the
 // base frame, m, with their names) and the planned TCP path through them.
 struct ProgramOverlay {
   std::vector<std::array<double, 3>> waypoints;
@@ -140,7 +140,7 @@ struct ProgramOverlay {
   int selected = -1;                         // index into waypoints, -1 if none
 };
 
-// What a motion job (Session::runMotion) gets besides the robot: its stop token, set by
+// What a motion job (Session::runArmMotion) gets besides the arm: its stop token, set by
 // requestStop() and by close / disconnect / quit, and the age of the window's heartbeat (the display
 // tick), so that a motion the operator holds on (jog) ends when the window stops responding.
 // Valid while the job runs; every call is lock-free and real-time safe (any thread).
@@ -174,9 +174,9 @@ class Session : public QObject {
   // Stops motion, disconnects, stops the embedded simulator. Emits closed("").
   void close();
   bool isOpen() const;
-  // Addition: true between open() and opened()/openFailed().
+  // True between open() and opened()/openFailed().
   bool isOpening() const;
-  // Addition: true while the session tries to re-open after the controller stopped sending states
+  // True while the session tries to re-open after the controller stopped sending states
   // for more than 1 s (e.g. after rebootRobot()); between reconnecting() and reconnected()/closed().
   bool isReconnecting() const;
   const SessionTarget& target() const;
@@ -191,7 +191,7 @@ class Session : public QObject {
   // The embedded simulator (scene: external wrench, e-stop, DI levels); nullptr on a real robot.
   // Its calls are quick and may be made from the GUI thread.
   xmate::sim::Server* simulator();
-  // Additions: the open arm of either family (for spec(), capabilities(), IO names); nullptr when
+  // The open arm of either family (for spec(), capabilities(), IO names); nullptr when
   // closed. Commands and motions on it go through runOnArm() / runArmMotion().
   xmate::arm::Arm* arm();
   // A KUKA's RSI arm (its context, limits and joint stream state); nullptr otherwise.
@@ -205,19 +205,17 @@ class Session : public QObject {
   // Queues job on the command worker (one at a time, in order). When it returns, emits
   // commandFinished(label, true, ""), or (label, false, what()) if it threw. Never blocks.
   void run(const QString& label, std::function<void(xmate::Robot&)> job);
-  // Runs a motion (startMove + Control()) on the motion worker; at most one at a time (refused with
-  // commandFinished(label, false, "a motion is already running") otherwise). The job must poll its
-  // token's stopRequested() -- in its real-time callback and in any wait -- and finish smoothly when
-  // it is set: requestStop(), close(), a lost connection and the window's end all set it. When the
-  // job has not ended 1.5 s after close(), the session sends StopMove and closes the connection
-  // under it (docs/reliability.md, "Stop and disconnect"). motionFinished(label, ...) follows,
-  // unless the session closed meanwhile.
-  using MotionJob = std::function<void(xmate::Robot&, const MotionToken&)>;
-  void runMotion(const QString& label, MotionJob job);
-  // Additions: the same for either family, on the arm::Arm -- a command (IO) on the command worker,
-  // a motion (arm::Arm::runJointMotion) on the motion worker.
+  // A command on the arm (IO) on the command worker, as run() does for the xMate client.
   using ArmJob = std::function<void(xmate::arm::Arm&)>;
   void runOnArm(const QString& label, ArmJob job);
+  // Runs a motion on the arm (its runJointMotion / runCartesianMotion, or the teach executor) on the
+  // motion worker; at most one at a time (refused with commandFinished(label, false, "a motion is
+  // already running") otherwise). The job must poll its token's stopRequested() -- in its real-time
+  // callback and in any wait -- and finish smoothly when it is set: requestStop(), close(), a lost
+  // connection and the window's end all set it. When the job has not ended 1.5 s after close(), the
+  // session stops the motion on the controller and closes the connection under it
+  // (docs/reliability.md, "Stop and disconnect"). motionFinished(label, ...) follows, unless the
+  // session closed meanwhile. GUI thread.
   using ArmMotionJob = std::function<void(xmate::arm::Arm&, const MotionToken&)>;
   void runArmMotion(const QString& label, ArmMotionJob job);
   // The window's record of settings sent (see OperatorSettings). GUI thread only.
@@ -227,12 +225,12 @@ class Session : public QObject {
   void setProgramOverlay(const ProgramOverlay& overlay);  // emits programOverlayChanged()
   void setOperatorSettings(const OperatorSettings& settings);  // emits operatorSettingsChanged()
 
-  // Addition: a panel that set DO index (0..5; a KUKA's: the index into arm()->outputNames(), < 64)
+  // A panel that set DO index (0..5; a KUKA's: the index into arm()->outputNames(), < 64)
   // records it here, so live().digital_out / outputs show it on a real robot (the simulators
   // report their outputs themselves). GUI thread only.
   void recordDigitalOutput(int index, bool on);
 
-  // Addition: a panel tells the event log what happened in operator words (e.g. the outcome of a
+  // A panel tells the event log what happened in operator words (e.g. the outcome of a
   // program run); emits eventReported(). detail: the programmer's words, for a tooltip. GUI thread.
   void reportEvent(EventLevel level, const QString& text, const QString& detail = QString());
 
@@ -244,7 +242,7 @@ class Session : public QObject {
   void opened();
   void openFailed(const QString& reason);
   void closed(const QString& reason);  // "" when asked for; else why (controller gone, ...)
-  // Additions: the controller went silent and the session is re-opening it / succeeded. If it
+  // The controller went silent and the session is re-opening it / succeeded. If it
   // cannot (10 s simulator, 60 s robot), closed(reason) follows.
   void reconnecting(const QString& reason);
   void reconnected();
@@ -253,16 +251,16 @@ class Session : public QObject {
   // Display rate, before tick(): the samples the real-time thread recorded since the last batch,
   // oldest first. The pointer is valid only during the call (connect directly, GUI thread).
   void samplesArrived(const xmate::client::StateSample* samples, int count);
-  // Addition: the same cycles as arm samples, for either family (after samplesArrived on an xMate).
+  // The same cycles as arm samples, for either family (after samplesArrived on an xMate).
   void armSamplesArrived(const xmate::arm::ArmSample* samples, int count);
-  // Addition: run() queued the job labelled label (commandFinished follows).
+  // Run() queued the job labelled label (commandFinished follows).
   void commandStarted(const QString& label);
   void commandFinished(const QString& label, bool ok, const QString& message);
   void operatorSettingsChanged();
   void programOverlayChanged();
   void motionStarted(const QString& label);
   void motionFinished(const QString& label, bool ok, const QString& message);
-  // Addition: see reportEvent().
+  // See reportEvent().
   void eventReported(rci::ui::Session::EventLevel level, const QString& text, const QString& detail);
 
  private:

@@ -26,7 +26,7 @@ namespace rci::ui {
 // The motion worker's shared flags for the session's one motion at a time: set by the GUI thread,
 // read by the job and its real-time callback (lock-free atomics).
 struct MotionFlags {
-  std::atomic<bool> busy{false};          // a runMotion() job is queued or running
+  std::atomic<bool> busy{false};          // a runArmMotion() job is queued or running
   std::atomic<bool> stop{false};          // the current job's stop token (cleared when one is queued)
   std::atomic<int64_t> heartbeat_ns{0};   // steady clock of the GUI thread's last display tick
 };
@@ -46,7 +46,7 @@ struct Link {
   std::unique_ptr<xmate::arm::Arm> rci_arm;
   xmate::arm::Arm* arm = nullptr;
   std::unique_ptr<JobWorker> commands;         // run() jobs and the 5 Hz poll
-  std::unique_ptr<JobWorker> motions;          // runMotion() jobs
+  std::unique_ptr<JobWorker> motions;          // runArmMotion() jobs
   std::atomic<bool> closing{false};            // set by shutdownLink: a running reconnect gives up
   MotionFlags motion;
 };

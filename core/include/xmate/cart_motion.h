@@ -25,6 +25,9 @@ struct DoubleSProfile {
 
 }  // namespace planning
 
+// Threads: one generator belongs to one thread at a time. calculateSynchronizedValues_cart and
+// calculateDesiredValues_cart are real-time safe (no allocation, no lock, no system call) for valid
+// arguments, so a Control() callback may call them every cycle -- only a refused argument throws.
 class CartMotionGenerator {
  public:
   // speed_ratio in (0, 1]; throws std::invalid_argument outside it or for a non-finite s_goal.

@@ -7,6 +7,7 @@
 
 namespace xmate {
 
+// Threads: any, one parser per thread; reads a file (not real-time safe).
 class INIParser {
  public:
   // Reads file; false if it cannot be opened or a line is malformed (see LastError()).

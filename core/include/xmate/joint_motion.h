@@ -11,6 +11,10 @@
 
 namespace xmate {
 
+// Threads: one generator belongs to one thread at a time. The constructor and GetTime may be called
+// anywhere; calculateSynchronizedValues_joint, calculateDesiredValues_joint and
+// calculateDerivatives_joint are real-time safe (no allocation, no lock, no system call) for valid
+// arguments, so a Control() callback may call them every cycle -- only a refused argument throws.
 class JointMotionGenerator {
  public:
   // speed_ratio in (0, 1]; throws std::invalid_argument outside it, for a non-finite goal or a

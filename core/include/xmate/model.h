@@ -14,6 +14,10 @@ namespace xmate {
 
 class Robot;
 
+// Threads: a model belongs to one thread at a time (copy it for another). The constructors load
+// the robot's description and allocate: make the model before Control(). GetCartPose, GetJointPos,
+// Jacobian, GetTauNoFriction, GetPsi and MassMatrix are real-time safe (no allocation, no lock, no
+// system call), so a Control() callback may call them every cycle; the setters are not.
 class XmateModel {
  public:
   // Return codes of GetJointPos (0 = success); the vendor manual groups them in pairs. Exact

@@ -24,7 +24,8 @@ struct cart_pos {
 // MotionException naming the joint or face, the limit and the value (moving back towards them is
 // allowed). Throw MotionException when planning fails (unreachable, collinear arc points, limits),
 // when the arm is still stopping after a stop (startMove), and ControlException when the controller
-// aborts. Caller's thread, blocking. Return true when the target was reached.
+// aborts. Caller's thread, blocking, not real-time safe (never from a Control() callback: they run
+// Control() themselves). Return true when the target was reached.
 bool MOVEJ(double speed_ratio, const std::array<double, 7>& q_start, const std::array<double, 7>& q_target,
            Robot& robot);
 bool MOVEL(double speed_ratio, cart_pos& start, cart_pos& target, Robot& robot);

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // xmate::Robot: the client side of RCI (docs/api.md, "xmate::Robot"). TCP commands run on the
 // caller's thread; the 1 kHz UDP exchange runs on a dedicated real-time thread per robot.
+// Threads: every call below may be made from any thread, one Robot shared by several (docs/client.md,
+// "Threads"), but never from a Control() callback -- they block on the network. None of them is
+// real-time safe; in a callback, use the state it is given.
 #pragma once
 
 #include <array>
@@ -25,9 +28,9 @@ class Robot {
   Robot& operator=(const Robot&) = delete;
 
   // Opens the TCP session and the UDP exchange. Throws TcpException / NetworkException with the
-  // address and the reason; no-op when connected.
+  // address and the reason; no-op when connected. Blocking.
   void connect();
-  // Drops the session and opens it again (after a reboot, a cable pull). true on success.
+  // Drops the session and opens it again (after a reboot, a cable pull). true on success. Blocking.
   bool reconnect();
 
   // ---- Motion -----------------------------------------------------------------------------
@@ -38,10 +41,15 @@ class Robot {
   // motion running, or the arm still moving. Caller's thread, blocking.
   void startMove(RCI::robot::StartMoveRequest::ControllerMode controller_mode,
                  RCI::robot::StartMoveRequest::MotionGeneratorMode motion_mode);
+  // Ends the running motion with the controller's stop ramp; Control() then throws. Any thread (the
+  // one that stops a Control() running on another), blocking on the network.
   void stopMove();
   // Calls the callback once per 1 ms cycle with the newest state and sends what it returns;
-  // blocks until the callback returns MotionFinished(...). The caller's thread blocks; the callback
-  // runs on the robot's real-time thread and must not block, allocate or lock.
+  // blocks until the callback returns MotionFinished(...). The caller's thread blocks (one
+  // Control() at a time per robot). The callback runs on the robot's real-time thread and must not
+  // block, allocate, lock or do I/O: a cycle it misses is a command the controller never gets. What
+  // it may call: the generators of joint_motion.h and cart_motion.h, XmateModel's kinematics and
+  // dynamics, JointRateLimiter::limit (each says "real-time safe").
   // Lost states: when states never reached this PC (or were left unanswered after a stall of the
   // real-time thread), the callback is first called once for each missed cycle, oldest first --
   // with the newest state, its message_id set to the missed cycle's -- and those outputs are not
@@ -55,10 +63,11 @@ class Robot {
   void Control(JointControl callback);
   void Control(CartesianControl callback);
   void Control(TorqueControl callback);
-  // Waits for the next state from the controller (UdpException after 1 s without one).
+  // Waits for the next state from the controller (UdpException after 1 s without one). Blocking.
   RCI::robot::RobotState receiveRobotState();
 
   // ---- Settings (ranges in docs/api.md; violations throw std::invalid_argument) ------------
+  // Each is one request to the controller and waits for its answer: blocking, any thread, not real-time safe.
   void setCollisionBehavior(const std::array<double, 7>& upper_torque_thresholds_nominal);
   void setCartesianLimit(const std::array<double, 3>& size, const std::array<double, 16>& frame,
                          bool active = true);
@@ -82,6 +91,7 @@ class Robot {
   int getSafetyStopState();  // 1 none, 2 ESTOP, 3 GSTOP
 
   // ---- Extensions (RCI Studio) ----------------------------------------------------------------
+  // These three never block (any thread).
   XmateType type() const;
   // Tool and payload last set through this robot (identity / zero until set).
   std::array<double, 16> toolFrame() const;

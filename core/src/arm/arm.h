@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // arm::Arm: one robot arm, whichever family drives it -- an xMate over RCI (RciArm), a KUKA over
-// RSI (RsiArm). The model, the newest state in SI units, every cycle's sample, a joint motion
-// streamed at the controller's cycle, digital IO, and what the backend can do. docs/architecture.md,
+// RSI (RsiArm). The model, the newest state in SI units, every cycle's sample, a joint (or, where
+// the controller has its own Cartesian control, a TCP) motion streamed at the controller's cycle,
+// the joint range a motion can reach, digital IO, and what the backend can do. docs/architecture.md,
 // "One interface for both robot families".
 #pragma once
 
@@ -27,6 +28,7 @@ enum class Capability : uint32_t {
   kControllerSafety = 1u << 7,  // settings on the controller: collision thresholds, safety box, soft limits, filters, tool, impedance
   kDigitalIo = 1u << 8,         // digital inputs and outputs reachable from the PC
   kTcpSetPoint = 1u << 9,       // the commanded TCP (or flange) position in every sample (RSI's DEF_RSol sent)
+  kCartesianMotion = 1u << 10,  // TCP poses streamed to the controller's own Cartesian control (runCartesianMotion)
 };
 using Capabilities = uint32_t;
 constexpr Capabilities operator|(Capability a, Capability b) { return uint32_t(a) | uint32_t(b); }
@@ -39,7 +41,7 @@ struct ArmSample {
   double time = 0;                       // takeSamples(): s since the connection opened, by the PC's clock at arrival (latest(): 0)
   uint32_t session = 0;                  // 1, 2, ...: a new one after the controller stopped sending and began again
   std::array<double, 7> q{};             // measured joints, rad
-  std::array<double, 7> q_command{};     // the joints the controller is commanded to, rad
+  std::array<double, 7> q_command{};     // the joints the controller is commanded to, rad (a motion starts from them)
   std::array<double, 7> tau{};           // Capability::kJointTorques, Nm
   std::array<double, 7> motor_current{}; // Capability::kMotorCurrents, A
   std::array<double, 7> gear_torque{};   // Capability::kGearTorques, Nm
@@ -63,6 +65,25 @@ class JointMotion {
   virtual bool command(const ArmSample& now, std::array<double, 7>& q) = 0;
 };
 
+// A TCP motion streamed one pose per controller cycle (Capability::kCartesianMotion); the controller
+// finds the joints, keeping the arm angle of a redundant arm.
+class CartesianMotion {
+ public:
+  virtual ~CartesianMotion() = default;
+  // The controller's cycle (the backend's real-time thread): no allocation, no lock, no I/O.
+  // Writes this cycle's TCP pose command (base frame, row-major 4x4, m); returns true when it was the last.
+  virtual bool command(const ArmState& now, std::array<double, 16>& pose) = 0;
+};
+
+// The joint range (rad) a motion can reach now: the model's range, on RSI narrowed to the context's
+// correction limits around where RSI was switched on (Capability::kCorrectionLimits). session: the
+// session the range belongs to (0: any) -- a motion planned within it ends, holding still, when
+// another session begins. Joints beyond the model's axes: 0.
+struct MotionBounds {
+  std::array<double, 7> lower{}, upper{};
+  uint32_t session = 0;
+};
+
 class Arm {
  public:
   virtual ~Arm() = default;
@@ -83,6 +104,13 @@ class Arm {
   // from where the arm is. Throws std::runtime_error saying what ended it otherwise (a controller
   // error, the robot stopped sending, RSI stopped) and what to do.
   virtual void runJointMotion(JointMotion& motion) = 0;
+  // The same for a TCP motion, on an arm with Capability::kCartesianMotion; others throw
+  // std::runtime_error saying so.
+  virtual void runCartesianMotion(CartesianMotion& motion);
+
+  // Any thread, lock-free. Throws std::runtime_error when the range is not known yet (RSI not
+  // running: what to start on the robot).
+  virtual MotionBounds motionBounds() const;
 
   // Digital IO (Capability::kDigitalIo): the signals by name ("DO0_1", "$OUT[3]"), in the order
   // setOutput / input take them. The caller's thread; may block on the network. Throw

@@ -32,6 +32,13 @@ ArmSample sampleOf(const RobotState& s) {
   return sampleOf(s, {s.toolTobase_pos_m[3], s.toolTobase_pos_m[7], s.toolTobase_pos_m[11]});
 }
 
+ArmState stateOf(const RobotState& s) {
+  ArmState state;
+  state.sample = sampleOf(s);
+  state.tcp = s.toolTobase_pos_m;
+  return state;
+}
+
 std::vector<std::string> names(bool output) {
   std::vector<std::string> list;
   for (int i = 0; i < model::kXmateSignalCount; ++i)
@@ -57,14 +64,14 @@ RciArm::RciArm(Robot& robot) : robot_(robot), spec_(&model::robotSpec(robot.type
 
 Capabilities RciArm::capabilities() const {
   return Capability::kJointTorques | Capability::kExternalWrench | Capability::kPowerControl |
-         Capability::kBuiltInGuiding | Capability::kControllerSafety | Capability::kDigitalIo;
+         Capability::kBuiltInGuiding | Capability::kControllerSafety | Capability::kDigitalIo |
+         Capability::kCartesianMotion;
 }
 
 bool RciArm::latest(ArmState& out) const {
   RobotState s;
   if (!robot_.connection().latestState(s)) return false;
-  out.sample = sampleOf(s);
-  out.tcp = s.toolTobase_pos_m;
+  out = stateOf(s);
   return true;
 }
 
@@ -83,10 +90,27 @@ void RciArm::runJointMotion(JointMotion& motion) {
   using CM = RCI::robot::StartMoveRequest::ControllerMode;
   using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
   robot_.startMove(CM::kJointPosition, MM::kJointPosition);
-  robot_.Control(JointControl([&motion](RobotState s) -> JointPositions {
+  bool first = true;
+  robot_.Control(JointControl([&motion, &first](RobotState s) -> JointPositions {
     JointPositions command;
-    const bool last = motion.command(sampleOf(s), command.q);
+    ArmSample now = sampleOf(s);
+    // The xMate takes the first command against the measured joints: the motion starts from them.
+    if (first) now.q_command = s.q;
+    first = false;
+    const bool last = motion.command(now, command.q);
     command.motion_finished = last;
+    return command;
+  }));
+}
+
+void RciArm::runCartesianMotion(CartesianMotion& motion) {
+  using CM = RCI::robot::StartMoveRequest::ControllerMode;
+  using MM = RCI::robot::StartMoveRequest::MotionGeneratorMode;
+  robot_.startMove(CM::kCartesianPosition, MM::kCartesianPosition);
+  robot_.Control(CartesianControl([&motion](RobotState s) -> CartesianPose {
+    CartesianPose command;
+    command.motion_finished = motion.command(stateOf(s), command.toolTobase_pos_c);
+    command.psi_valid = false;  // keep the arm angle
     return command;
   }));
 }

@@ -28,8 +28,11 @@ class RciArm : public Arm {
   size_t takeSamples(ArmSample* out, size_t max) override;
   uint64_t samplesDropped() const override;
   // startMove in joint-position mode and one JointPositions per state until the motion's last;
-  // throws what Robot::Control throws (ControlException names the controller's error bits).
+  // throws what Robot::Control throws (ControlException names the controller's error bits). The
+  // first sample's q_command is the measured q: the controller takes the first command against it.
   void runJointMotion(JointMotion& motion) override;
+  // startMove in Cartesian-position mode and one CartesianPose per state (the arm angle kept).
+  void runCartesianMotion(CartesianMotion& motion) override;
   std::vector<std::string> outputNames() const override;  // DO0_0 .. DO1_1
   std::vector<std::string> inputNames() const override;   // DI0_0 .. DI1_1
   void setOutput(size_t index, bool level) override;

@@ -3,6 +3,7 @@
 // joint stream as runJointMotion, and the context's wired signals as digital IO.
 #include "arm/rsi_arm.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -149,6 +150,21 @@ size_t RsiArm::takeSamples(ArmSample* out, size_t max) {
 void RsiArm::runJointMotion(JointMotion& motion) {
   StreamMotion adapter(motion);
   stream_->run(adapter);
+}
+
+MotionBounds RsiArm::motionBounds() const {
+  rsi::StreamState s;
+  if (!stream_->state(s))
+    throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived; start the KRL program (RSI_ON, "
+                             "RSI_MOVECORR) on the robot");
+  MotionBounds bounds;
+  const rsi::AxisCorrectionLimits& limits = stream_->limits();
+  for (size_t i = 0; i < 6; ++i) {
+    bounds.lower[i] = std::max(s.q_on[i] + limits.lower[i], spec_->q_min[i]);
+    bounds.upper[i] = std::min(s.q_on[i] + limits.upper[i], spec_->q_max[i]);
+  }
+  bounds.session = s.session;
+  return bounds;
 }
 
 std::vector<std::string> RsiArm::outputNames() const {

@@ -47,6 +47,8 @@ class RsiArm : public Arm {
   // Streams through the joint stream (AXISCORR corrections). The caller checks the motion first
   // (stream().checkSample): the KRC clamps at the context's limits but does not say why.
   void runJointMotion(JointMotion& motion) override;
+  // The axis ranges narrowed to the context's correction limits around q_on, for this RSI session.
+  MotionBounds motionBounds() const override;
   std::vector<std::string> outputNames() const override;
   std::vector<std::string> inputNames() const override;
   void setOutput(size_t index, bool level) override;

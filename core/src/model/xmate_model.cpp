@@ -3,7 +3,6 @@
 // model::ArmKinematics of the xMate model (arm_kinematics.h). The arm is loaded from the model's
 // URDF with urdfdom when the XmateModel is constructed.
 #include <xmate/model.h>
-#include <xmate/robot.h>
 
 #include "model/arm_kinematics.h"
 #include "model/inverse_kinematics.h"
@@ -29,16 +28,7 @@ struct XmateModel::Impl {
   model::ArmKinematics kinematics;
 };
 
-// With a robot, the model starts with the tool and payload last set through it (setCoor, setLoad).
-XmateModel::XmateModel(Robot* robot, XmateType type) : XmateModel(type) {
-  if (robot == nullptr) return;
-  SetCoor(robot->toolFrame());
-  double mass = 0;
-  std::array<double, 3> center{};
-  std::array<double, 9> inertia{};
-  robot->load(mass, center, inertia);
-  SetLoad(mass, center, inertia);
-}
+// XmateModel(Robot*, XmateType) reads the robot: it is the client's (client/model_of_robot.cpp).
 XmateModel::XmateModel(XmateType type)
     : impl_(std::make_unique<Impl>(Impl{type, model::ArmKinematics(model::robotSpec(type))})) {}
 XmateModel::~XmateModel() = default;

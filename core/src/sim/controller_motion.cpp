@@ -19,7 +19,7 @@ using protocol::StopMoveStatus;
 constexpr uint8_t code(StartMoveStatus s) { return static_cast<uint8_t>(s); }
 constexpr uint8_t code(StopMoveStatus s) { return static_cast<uint8_t>(s); }
 
-// The pairs of issue 3: joint position/impedance + joint generator, Cartesian position/impedance +
+// The pairs of modes: joint position/impedance + joint generator, Cartesian position/impedance +
 // Cartesian generator, torque + idle generator.
 bool validPair(MoveController controller, MoveGenerator generator) {
   switch (controller) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The executor (issue 5): runs a program on the calling thread through the robot's real-time loop
+// The executor: runs a program on the calling thread through the robot's real-time loop
 // with the jerk-limited planners -- MOVEJ in joint position mode (xmate/joint_motion.h), MOVEL and
 // MOVEC in Cartesian position mode (planning/cartesian_trajectory.h, timed within the joint limits
 // by client::planWithinJointLimits), PATH re-timed within the joint limits (path_timing.h) after a

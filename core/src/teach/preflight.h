@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Pre-flight of a program (issue 5), before anything moves: follows the program from a start
+// Pre-flight of a program, before anything moves: follows the program from a start
 // configuration, resolving every target as the executor will, and reports EVERY problem by
 // instruction -- invalid fields, IK reachability, hard and soft joint limits, the Cartesian safety
 // box (targets and sampled paths), degenerate arcs, paths too close to singular poses. The same

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Programs of the teach feature (issue 5): an ordered list of instructions -- MOVEJ / MOVEL / MOVEC
+// Programs of the teach feature: an ordered list of instructions -- MOVEJ / MOVEL / MOVEC
 // to taught targets, PATH (a demonstrated path replayed as taught), WAIT, SET_DO, WAIT_DI -- for
 // one robot model. Plain data; the file format is
 // program_io.h's job, running it executor.h's.

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // JogRamp: each cycle the acceleration that would land exactly on the target velocity, limited by
 // the jerk and acceleration bounds; the last step lands exactly (so the ramp ends exactly at rest).
-#include "panels/jog_ramp.h"
+#include "jog/ramp.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace rci::ui {
+namespace xmate::jog {
 
 JogRamp::JogRamp(const RampLimits& limits, double dt) : limits_(limits), dt_(dt) {}
 
@@ -54,4 +54,4 @@ double JogRamp::stoppingTime() const {
   return cycles * dt_;
 }
 
-}  // namespace rci::ui
+}  // namespace xmate::jog

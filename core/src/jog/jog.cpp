@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Jog command generators: ramped velocity along one axis, braking before limits, clean finish.
-#include "panels/jog_motion.h"
+#include "jog/jog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 #include "net/clock.h"
 
-namespace rci::ui {
+namespace xmate::jog {
 namespace {
 
-RampLimits jointRamp(const xmate::model::RobotSpec& spec, int joint, double speed_fraction) {
+RampLimits jointRamp(const model::RobotSpec& spec, int joint, double speed_fraction) {
   const double a = kJogJointAccelFraction * spec.ddq_max[joint];
   return {std::clamp(speed_fraction, 0.01, 1.0) * kJogJointSpeedFraction * spec.dq_max[joint], a,
           kJogJerkPerAccel * a};
@@ -32,7 +32,7 @@ int elapsedCycles(uint64_t previous_id, uint64_t id) {
   return int(std::min<uint64_t>(id - previous_id, 20));
 }
 
-JointLimitsRad jogLimits(const xmate::model::RobotSpec& spec, bool soft_enabled,
+JointLimitsRad jogLimits(const model::RobotSpec& spec, bool soft_enabled,
                          const std::array<double, 7>& soft_lower_deg, const std::array<double, 7>& soft_upper_deg) {
   constexpr double kRad = 3.14159265358979323846 / 180.0;
   JointLimitsRad l;
@@ -49,16 +49,25 @@ JointLimitsRad jogLimits(const xmate::model::RobotSpec& spec, bool soft_enabled,
 }
 
 JointLimitsRad withinCorrectionLimits(const JointLimitsRad& limits, const std::array<double, 6>& q_on,
-                                      const xmate::rsi::AxisCorrectionLimits& correction) {
-  JointLimitsRad l = limits;
+                                      const rsi::AxisCorrectionLimits& correction) {
+  arm::MotionBounds bounds;
   for (size_t i = 0; i < 6; ++i) {
-    l.lower[i] = std::max(l.lower[i], q_on[i] + correction.lower[i] + kJogLimitMargin);
-    l.upper[i] = std::min(l.upper[i], q_on[i] + correction.upper[i] - kJogLimitMargin);
+    bounds.lower[i] = q_on[i] + correction.lower[i];
+    bounds.upper[i] = q_on[i] + correction.upper[i];
+  }
+  return withinBounds(limits, bounds, 6);
+}
+
+JointLimitsRad withinBounds(const JointLimitsRad& limits, const arm::MotionBounds& bounds, int dof) {
+  JointLimitsRad l = limits;
+  for (size_t i = 0; i < size_t(std::clamp(dof, 0, 7)); ++i) {
+    l.lower[i] = std::max(l.lower[i], bounds.lower[i] + kJogLimitMargin);
+    l.upper[i] = std::min(l.upper[i], bounds.upper[i] - kJogLimitMargin);
   }
   return l;
 }
 
-JointJog::JointJog(const xmate::model::RobotSpec& spec, int joint, int direction, double speed_fraction,
+JointJog::JointJog(const model::RobotSpec& spec, int joint, int direction, double speed_fraction,
                    const JointLimitsRad& limits, const JogFlags& flags, double cycle_s)
     : joint_(joint),
       direction_(direction >= 0 ? 1 : -1),
@@ -66,15 +75,15 @@ JointJog::JointJog(const xmate::model::RobotSpec& spec, int joint, int direction
       flags_(flags),
       ramp_(jointRamp(spec, joint, speed_fraction), cycle_s) {}
 
-xmate::JointPositions JointJog::next(const RCI::robot::RobotState& state) {
+JointPositions JointJog::next(const RCI::robot::RobotState& state) {
   // At start the command equals the measured position (docs/robot_models.md, "Command rules").
-  xmate::JointPositions command;
+  JointPositions command;
   const bool last = advance(state.message_id, state.q, command.q);
-  if (last) return xmate::MotionFinished(command);
+  if (last) return MotionFinished(command);
   return command;
 }
 
-bool JointJogMotion::command(const xmate::arm::ArmSample& now, std::array<double, 7>& q) {
+bool JointJogMotion::command(const arm::ArmSample& now, std::array<double, 7>& q) {
   if (session_ != 0 && now.session != session_) {  // RSI restarted since the jog was planned: hold still
     session_changed_ = true;
     q = now.q_command;
@@ -116,13 +125,12 @@ CartesianJog::CartesianJog(int axis, int direction, double speed_fraction, int d
       flags_(flags),
       ramp_(cartesianRamp(axis, speed_fraction)) {}
 
-bool CartesianJog::jointsNearLimit(const RCI::robot::RobotState& state) const {
+bool CartesianJog::jointsNearLimit(const std::array<double, 7>& q_c, const std::array<double, 7>& dq_c) const {
   // Joints keep roughly their present velocity while the TCP stops: a conservative extrapolation.
   const double horizon = ramp_.stoppingTime() + 0.002;
-  for (int i = 0; i < dof_; ++i) {
-    const double ahead = state.q_c[i] + state.dq_c[i] * horizon;
-    if ((state.dq_c[i] > 0 && ahead > limits_.upper[i]) || (state.dq_c[i] < 0 && ahead < limits_.lower[i]))
-      return true;
+  for (size_t i = 0; i < size_t(dof_); ++i) {
+    const double ahead = q_c[i] + dq_c[i] * horizon;
+    if ((dq_c[i] > 0 && ahead > limits_.upper[i]) || (dq_c[i] < 0 && ahead < limits_.lower[i])) return true;
   }
   return false;
 }
@@ -144,28 +152,50 @@ std::array<double, 16> CartesianJog::pose() const {
   return m;
 }
 
-xmate::CartesianPose CartesianJog::next(const RCI::robot::RobotState& state) {
-  const int cycles = started_ ? elapsedCycles(last_id_, state.message_id) : 1;
-  last_id_ = state.message_id;
+CartesianPose CartesianJog::next(const RCI::robot::RobotState& state) {
+  CartesianPose command;
+  const bool last = step(state.message_id, state.toolTobase_pos_m, state.q_c, state.dq_c, command.toolTobase_pos_c);
+  command.psi_valid = false;  // keep the arm angle
+  if (last) return MotionFinished(command);
+  return command;
+}
+
+bool CartesianJog::advance(const arm::ArmState& now, std::array<double, 16>& pose) {
+  const std::array<double, 7>& q_c = now.sample.q_command;
+  std::array<double, 7> dq_c{};
+  if (started_) {
+    const double dt = elapsedCycles(last_id_, now.sample.cycle) * cycle_s_;
+    for (size_t i = 0; i < 7; ++i) dq_c[i] = (q_c[i] - last_q_c_[i]) / dt;
+  }
+  last_q_c_ = q_c;
+  return step(now.sample.cycle, now.tcp, q_c, dq_c, pose);
+}
+
+bool CartesianJog::step(uint64_t cycle, const std::array<double, 16>& tcp, const std::array<double, 7>& q_c,
+                        const std::array<double, 7>& dq_c, std::array<double, 16>& out) {
+  const int cycles = started_ ? elapsedCycles(last_id_, cycle) : 1;
+  last_id_ = cycle;
   if (!started_) {
-    start_ = state.toolTobase_pos_m;  // at start the command equals the measured pose
+    start_ = tcp;  // at start the command equals the measured pose
     started_ = true;
   }
   const bool go = flags_.held.load(std::memory_order_relaxed) && !flags_.stop.load(std::memory_order_relaxed);
   double target = go ? direction_ * ramp_.maxVelocity() : 0.0;
-  if (go && jointsNearLimit(state)) target = 0;
+  if (go && jointsNearLimit(q_c, dq_c)) target = 0;
   for (int c = 0; c < cycles; ++c) travelled_ += ramp_.step(target);
-  xmate::CartesianPose command;
-  command.toolTobase_pos_c = pose();
-  command.psi_valid = false;  // keep the arm angle
-  if (!go && ramp_.atRest()) return xmate::MotionFinished(command);
-  return command;
+  out = pose();
+  return !go && ramp_.atRest();
 }
 
-xmate::guide::GuideParameters cartesianJogParameters(int axis, double speed_fraction) {
-  xmate::guide::GuideParameters p;
+bool CartesianJogMotion::command(const arm::ArmState& now, std::array<double, 16>& pose) {
+  watch_();
+  return jog_.advance(now, pose);
+}
+
+guide::GuideParameters cartesianJogParameters(int axis, double speed_fraction) {
+  guide::GuideParameters p;
   const bool translation = axis < 3;
-  p.axes = translation ? xmate::guide::GuideAxes::kTranslation : xmate::guide::GuideAxes::kRotation;
+  p.axes = translation ? guide::GuideAxes::kTranslation : guide::GuideAxes::kRotation;
   p.force_dead_band = 0;  // the push is exact: nothing to ignore
   p.torque_dead_band = 0;
   p.max_speed = std::max(1e-3, kJogTranslationSpeed * speed_fraction);
@@ -177,7 +207,7 @@ xmate::guide::GuideParameters cartesianJogParameters(int axis, double speed_frac
   return p;
 }
 
-JogPush::JogPush(const xmate::arm::Arm& arm, int axis, int direction, const xmate::guide::GuideParameters& parameters)
+JogPush::JogPush(const arm::Arm& arm, int axis, int direction, const guide::GuideParameters& parameters)
     : arm_(arm), axis_(axis) {
   // 1.5 times what the damping needs at the top speed: the guide's cap holds the speed there.
   const double push = axis < 3 ? parameters.damping * parameters.max_speed * 1.5
@@ -185,14 +215,20 @@ JogPush::JogPush(const xmate::arm::Arm& arm, int axis, int direction, const xmat
   push_ = direction < 0 ? -push : push;
 }
 
+bool GuidedCartesianJogMotion::command(const arm::ArmSample& now, std::array<double, 7>& q) {
+  watch_();
+  if (!flags_.held.load(std::memory_order_relaxed) || flags_.stop.load(std::memory_order_relaxed)) guide_.requestStop();
+  return guide_.command(now, q);
+}
+
 bool JogPush::read(std::array<double, 6>& wrench, int64_t& received_ns) const {
-  received_ns = xmate::net::monotonicNs();  // always fresh: the guide never sees it silent
+  received_ns = net::monotonicNs();  // always fresh: the guide never sees it silent
   wrench = {};
   if (!biased_) {
     biased_ = true;
     return true;
   }
-  xmate::arm::ArmState state;
+  arm::ArmState state;
   if (!arm_.latest(state)) return true;
   // Base axis k in the flange frame: row k of R (R^T e_k), R the flange's rotation (row-major 4x4).
   const size_t k = size_t(axis_ % 3);
@@ -201,4 +237,4 @@ bool JogPush::read(std::array<double, 6>& wrench, int64_t& received_ns) const {
   return true;
 }
 
-}  // namespace rci::ui
+}  // namespace xmate::jog

@@ -4,7 +4,7 @@
 // differentiable), one 1 ms cycle at a time, on the real-time thread (no allocation, no Qt).
 #pragma once
 
-namespace rci::ui {
+namespace xmate::jog {
 
 struct RampLimits {
   double v_max = 0;  // |target velocity| is clamped to this (unit/s)
@@ -33,4 +33,4 @@ class JogRamp {
   double v_ = 0, a_ = 0;
 };
 
-}  // namespace rci::ui
+}  // namespace xmate::jog
