@@ -14,8 +14,10 @@
 
 namespace xmate::rsi {
 class Link;
-class JointStream;
 }  // namespace xmate::rsi
+namespace xmate::arm {
+class JointStream;
+}  // namespace xmate::arm
 
 namespace rci_cli::soak {
 struct SoakOptions;
@@ -140,7 +142,7 @@ CLI::Option* addSensorOption(CLI::App& command, FtOptions& options);
 std::string contextNaming(const std::string& config_path);
 // Waits (at most a minute, or until `interrupted`) until the robot sends; prints what to do meanwhile.
 // std::runtime_error saying what to check when it does not.
-void waitForRsi(const xmate::rsi::Link& link, const xmate::rsi::JointStream& stream, const std::string& where,
+void waitForRsi(const xmate::rsi::Link& link, const xmate::arm::JointStream& stream, const std::string& where,
                 const std::atomic<bool>& interrupted);
 
 struct GuideOptions {

@@ -23,7 +23,7 @@
 #include "model/resource_locator.h"
 #include "model/robot_spec.h"
 #include "arm/rsi_arm.h"
-#include "rsi/joint_stream.h"
+#include "arm/joint_stream.h"
 #include "rsi/link.h"
 #include "sim/krc_server.h"
 #include "sim/server.h"
@@ -177,7 +177,7 @@ int runOverRsi(const RunOptions& o, const Program& program, const xmate::model::
   arm_config.link.cycle_ms = o.cycle_ms;
   arm::RsiArm arm(arm_config);
   rsi::Link& link = arm.link();
-  rsi::JointStream& stream = arm.stream();
+  arm::JointStream& stream = arm.stream();
   const rsi::EthernetConfig& config = arm.ethernetConfig();
   arm.start();
   std::unique_ptr<sim::KrcServer> krc;

@@ -10,7 +10,7 @@
 
 #include "cli.h"
 #include "rsi/config.h"
-#include "rsi/joint_stream.h"
+#include "arm/joint_stream.h"
 #include "rsi/link.h"
 
 namespace rci_cli {
@@ -26,12 +26,12 @@ std::string contextNaming(const std::string& config_path) {
 }
 
 // Waits (at most a minute) until the robot sends; says what to do meanwhile.
-void waitForRsi(const xmate::rsi::Link& link, const xmate::rsi::JointStream& stream, const std::string& where,
+void waitForRsi(const xmate::rsi::Link& link, const xmate::arm::JointStream& stream, const std::string& where,
                 const std::atomic<bool>& interrupted) {
   std::printf("waiting for the robot on %s -- start the KRL program with RSI_ON and RSI_MOVECORR\n", where.c_str());
   std::fflush(stdout);
   const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  xmate::rsi::StreamState s;
+  xmate::arm::StreamState s;
   while (!(link.receiving() && stream.state(s))) {
     if (std::chrono::steady_clock::now() > end || interrupted.load())
       throw std::runtime_error("no <Rob> datagram arrived on " + where +

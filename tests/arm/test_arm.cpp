@@ -186,7 +186,7 @@ void TestArm::aKuka() {
   // Bounds of this session's reach: the start pose plus the context's +-90 deg, within the axis ranges.
   std::array<double, 7> lower{}, upper{};
   QVERIFY(arm.stream().reachableBounds(lower, upper));
-  rsi::StreamState s;
+  arm::StreamState s;
   QVERIFY(arm.stream().state(s));
   QVERIFY(std::abs(lower[0] - std::max(s.q_on[0] - 90 * kDeg, arm.spec().q_min[0])) < 1e-9);
   QVERIFY(std::abs(upper[1] - std::min(s.q_on[1] + 90 * kDeg, arm.spec().q_max[1])) < 1e-9);

@@ -176,7 +176,7 @@ void TestKukaIoSimJog::jointJogStopsAtCorrectionLimit() {
   waitRunning();
   QTRY_VERIFY_WITH_TIMEOUT(!session_->live().motion_running, kWaitMs);
   find<QSlider>(QStringLiteral("jog.speed"))->setValue(100);
-  xmate::rsi::StreamState s;
+  xmate::arm::StreamState s;
   QVERIFY(session_->rsiArm()->stream().state(s));
   const uint32_t rsi_session = s.session;
   const double q_on = s.q_on[0];
@@ -185,7 +185,7 @@ void TestKukaIoSimJog::jointJogStopsAtCorrectionLimit() {
   QVERIFY(limit > a1_start + 10 * kDeg);
   auto* plus = find<QPushButton>(QStringLiteral("jog.joint1.plus"));
   auto commanded = [this] {
-    xmate::rsi::StreamState now;
+    xmate::arm::StreamState now;
     session_->rsiArm()->stream().state(now);
     return now.q_command[0];
   };

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// rsi::JointStream against the fake robot: the AXISCORR limits read from a context, corrections held
+// arm::JointStream against the fake robot: the AXISCORR limits read from a context, corrections held
 // at zero until a motion runs, a motion's joints sent as AK totals relative to the set-point at
 // RSI_ON, the robot going silent during a motion reported, and the pre-motion checks naming the axis,
 // the limit and the value.
@@ -8,12 +8,14 @@
 #include <atomic>
 #include <thread>
 
+#include "arm/joint_stream.h"
 #include "model/robot_spec.h"
-#include "rsi/joint_stream.h"
 #include "rsi_test_support.h"
 
 using namespace xmate;
 using namespace xmate::rsi;
+using xmate::arm::JointStream;
+using xmate::arm::StreamState;
 using namespace xmate::rsi::testing;
 
 namespace {
@@ -34,10 +36,10 @@ AxisCorrectionLimits wideLimits() {
 }
 
 // Moves A1 by `degrees` over `cycles` cycles from the command it starts at.
-class Ramp : public CycleMotion {
+class Ramp : public arm::JointMotion {
  public:
   Ramp(double degrees, int cycles) : degrees_(degrees), cycles_(cycles) {}
-  bool command(const StreamState& s, std::array<double, 6>& q) override {
+  bool command(const arm::ArmSample& s, std::array<double, 7>& q) override {
     if (calls_++ == 0) start_ = s.q_command;
     q = start_;
     q[0] += degrees_ / kDeg * std::min(1.0, double(calls_) / cycles_);
@@ -49,7 +51,7 @@ class Ramp : public CycleMotion {
   double degrees_;
   int cycles_;
   int calls_ = 0;
-  std::array<double, 6> start_{};
+  std::array<double, 7> start_{};
 };
 
 }  // namespace

@@ -5,12 +5,13 @@
 // without tripping a limit, then finishes at the target); stop; speed override; single step;
 // programs refused by the pre-flight move nothing; a controller error (e-stop), a guard stop and a
 // DI timeout abort naming the instruction; a stop brakes as the plan allows; an arm held away from
-// its target is reported as not at rest.
+// its target is reported as not at rest; the executor runs on a port of no robot family.
 #include <QtTest>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,8 @@
 #include "teach/program_io.h"
 #include "teach/recording.h"
 #include "teach/report.h"
+#include "teach/robot_port.h"
+#include "teach/time_scaling.h"
 #include "teach/targets.h"
 
 using namespace xmate;
@@ -157,6 +160,53 @@ void pauseHoldAndResume(Executor& executor, Robot& robot, PauseProbe& probe) {
   executor.resume();
 }
 
+
+// A port of no robot family: its arm reaches each MOVEJ's joint target after `cycles` cycles of
+// plan time, scaled each cycle as the executor asks (pause, stop, override); it keeps what the
+// executor asked of it. Shows that the executor needs nothing but the port.
+class ScriptedPort : public RobotPort {
+ public:
+  explicit ScriptedPort(int cycles) : cycles_(cycles) {}
+  const model::RobotSpec& spec() const override { return xmate::model::robotSpec(XMATE7_PRO); }
+  Reading read() override { return {q_, {1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0.5, 0, 0, 0, 1}, 0}; }
+  std::array<double, 16> toolFrame() override { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
+  void setDO(int signal, bool value) override { outputs.push_back({signal, value}); }
+  bool getDI(int) override { return true; }
+  void move(const Program&, const Instruction& in, const model::ArmKinematics&, MotionControl& control,
+            InstructionReport& report) override {
+    ++moves;
+    const std::array<double, 7> from = q_;
+    TimeScaling scaling(control.speedOverride(), 5.0);
+    double plan = 0;
+    int cycle = 0;
+    for (; plan < cycles_; ++cycle) {
+      scaling.setTarget(control.scalingTarget(scaling));
+      scaling.step(1e-3);
+      plan += scaling.value();
+      for (int j = 0; j < 7; ++j) q_[j] = from[j] + (in.target.q[j] - from[j]) * std::min(1.0, plan / cycles_);
+      control.storeFraction(std::min(1.0, plan / cycles_));
+      if (control.stoppedHere(scaling)) {
+        report.status = InstructionStatus::kStopped;
+        report.message = "stopped by the operator";
+        break;
+      }
+      if (on_cycle) on_cycle(cycle);
+    }
+    report.duration = cycle * 1e-3;
+  }
+  void streamPath(const JointPath&, const PathTiming&, const model::ArmKinematics&, MotionControl&, PathRecording&,
+                  InstructionReport&) override {
+    throw MotionException("this port replays no paths");
+  }
+
+  int moves = 0;
+  std::vector<std::pair<int, bool>> outputs;
+  std::function<void(int cycle)> on_cycle;
+
+ private:
+  int cycles_;
+  std::array<double, 7> q_{0, 0.5, 0, 1.0, 0, 0.5, 0};
+};
 }  // namespace
 
 class TestExecutor : public QObject {
@@ -182,6 +232,7 @@ class TestExecutor : public QObject {
   void tooFastDemonstrationIsSlowedAndFollowed();
   void pauseResumeAndStopDuringAPath();
   void pathStartingElsewhereLeadsInWithAJointMove();
+  void runsOnAnyPort();
 };
 
 void TestExecutor::teachByDraggingAndReplay() {
@@ -744,6 +795,40 @@ void TestExecutor::pathStartingElsewhereLeadsInWithAJointMove() {
   const InstructionReport& r = report.instructions[0];
   QVERIFY2(r.lead_in > 0.1, qPrintable(QString::number(r.lead_in)));
   QVERIFY(r.duration > 0.98 * r.nominal_duration && r.duration < 1.05 * r.nominal_duration + 0.05);
+}
+
+void TestExecutor::runsOnAnyPort() {
+  ScriptedPort port(2000);
+  Program program;
+  program.robot = &xmate::model::robotSpec(XMATE7_PRO);
+  program.instructions.push_back(moveJ(jointTarget({0.2, 0.5, 0, 1.0, 0, 0.5, 0}), 0.5, "there"));
+  Instruction set_do;
+  set_do.type = InstructionType::kSetDo;
+  set_do.signal = 1;
+  set_do.value = true;
+  program.instructions.push_back(set_do);
+  program.instructions.push_back(waitDi(0, true, 100));
+  program.instructions.push_back(moveJ(jointTarget({0, 0.5, 0, 1.0, 0, 0.5, 0}), 0.5, "back"));
+
+  Executor executor;
+  const RunReport report = executor.run(port, program);
+  QVERIFY2(report.outcome == RunState::kFinished, report.message.c_str());
+  QCOMPARE(port.moves, 2);
+  QCOMPARE(port.outputs.size(), size_t(1));
+  QCOMPARE(port.outputs[0], std::make_pair(1, true));
+  QCOMPARE(report.instructions[0].q[0], 0.2);  // recorded through the port's read()
+  QCOMPARE(report.instructions[3].q[0], 0.0);
+
+  // A stop asked in the middle of the first move ramps the port's scaling down and ends the run.
+  port.on_cycle = [&](int cycle) {
+    if (cycle == 50) executor.stop();
+  };
+  const RunReport stopped = executor.run(port, program);
+  QCOMPARE(stopped.outcome, RunState::kStopped);
+  QCOMPARE(stopped.instructions[0].status, InstructionStatus::kStopped);
+  QCOMPARE(stopped.instructions[1].status, InstructionStatus::kNotRun);
+  QCOMPARE(port.moves, 3);
+  QVERIFY(stopped.instructions[0].q[0] > 0 && stopped.instructions[0].q[0] < 0.2);  // stopped on the way
 }
 
 QTEST_GUILESS_MAIN(TestExecutor)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The executor on a KUKA over RSI, end to end: rsi::Link + rsi::JointStream against the simulated
+// The executor on a KUKA over RSI, end to end: rsi::Link + arm::JointStream against the simulated
 // KRC (sim::KrcServer on its timed thread) on loopback. A program of MOVEJ, MOVEL and MOVEC on the
 // KR 6 R900 sixx reaches its targets; a motion beyond the context's correction limits is refused
 // before it moves, naming the axis, the limit and the value; RSI going off in the middle of a motion
@@ -17,7 +17,7 @@
 #include "model/robot_spec.h"
 #include "../rsi/rsi_test_support.h"
 #include "arm/rsi_arm.h"
-#include "rsi/joint_stream.h"
+#include "arm/joint_stream.h"
 #include "rsi/link.h"
 #include "sim/krc_server.h"
 #include "teach/executor.h"
@@ -46,7 +46,7 @@ struct Cell {
     krc = std::make_unique<sim::KrcServer>(rsi::testing::krcFor(config, arm->link().port(), false));
     krc->start();
     // As rci-cli run does: the program starts once RSI runs.
-    rsi::StreamState s;
+    arm::StreamState s;
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
     while (!arm->stream().state(s) && std::chrono::steady_clock::now() < end)
       std::this_thread::sleep_for(std::chrono::milliseconds(1));

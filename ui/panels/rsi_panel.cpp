@@ -25,7 +25,7 @@
 #include "panels/lamp.h"
 #include "rsi/codec.h"
 #include "rsi/config.h"
-#include "rsi/joint_stream.h"
+#include "arm/joint_stream.h"
 #include "rsi/link.h"
 #include "rsi/session_monitor.h"
 #include "session/session.h"
@@ -558,7 +558,7 @@ void RsiPanel::refresh(const LiveState& live) {
     refused_->hide();
   }
 
-  xmate::rsi::StreamState stream;
+  xmate::arm::StreamState stream;
   const bool have = arm->stream().state(stream) && stream.session > 0;
   for (size_t i = 0; i < 6; ++i)
     start_[i]->setText(have ? QStringLiteral("%1%2").arg(stream.q_on[i] * kDegPerRad, 0, 'f', 1).arg(QChar(0x00B0))

@@ -92,7 +92,7 @@ struct EnvelopeShown {
 // pose q_on changes), hidden while RSI is off and on an xMate.
 void showCorrectionEnvelope(RobotView& view, Session& session, EnvelopeShown& shown) {
   xmate::arm::RsiArm* rsi = session.rsiArm();
-  xmate::rsi::StreamState state;
+  xmate::arm::StreamState state;
   const bool running = rsi != nullptr && session.isOpen() &&
                        session.live().rsi.phase == xmate::rsi::SessionPhase::kRunning && rsi->stream().state(state) &&
                        view.scene() != nullptr && view.scene()->poser() != nullptr &&

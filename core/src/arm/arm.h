@@ -84,9 +84,25 @@ struct MotionBounds {
   uint32_t session = 0;
 };
 
+class RciArm;
+class RsiArm;
+
+// For the few places above that hold one implementation per family (the executor's ports,
+// teach/arm_port.h): Arm::accept() calls the visit() of the arm's own kind, so no one asks which
+// kind an arm is.
+class ArmVisitor {
+ public:
+  virtual ~ArmVisitor() = default;
+  virtual void visit(RciArm& arm) = 0;
+  virtual void visit(RsiArm& arm) = 0;
+};
+
 class Arm {
  public:
   virtual ~Arm() = default;
+
+  // Any thread: calls visitor.visit(*this) as the arm's own kind.
+  virtual void accept(ArmVisitor& visitor) = 0;
 
   // Any thread.
   virtual const model::RobotSpec& spec() const = 0;

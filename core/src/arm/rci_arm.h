@@ -21,6 +21,7 @@ class RciArm : public Arm {
   // takeSamples() pops the robot's sample ring: nothing else may consume it.
   explicit RciArm(Robot& robot);
 
+  void accept(ArmVisitor& visitor) override { visitor.visit(*this); }
   const model::RobotSpec& spec() const override { return *spec_; }
   Capabilities capabilities() const override;
   double cycleSeconds() const override { return 0.001; }

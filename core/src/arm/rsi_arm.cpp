@@ -34,28 +34,6 @@ double valueAt(const double* values, size_t count, int slot) {
   return slot >= 0 && size_t(slot) < count ? values[slot] : 0.0;
 }
 
-// The adapter from the joint stream's cycle to a JointMotion.
-class StreamMotion : public rsi::CycleMotion {
- public:
-  explicit StreamMotion(JointMotion& motion) : motion_(motion) {}
-  bool command(const rsi::StreamState& s, std::array<double, 6>& q) override {
-    sample_.cycle = s.cycles;
-    sample_.session = s.session;
-    for (size_t i = 0; i < 6; ++i) {
-      sample_.q[i] = s.q[i];
-      sample_.q_command[i] = s.q_command[i];
-    }
-    std::array<double, 7> out{};
-    const bool last = motion_.command(sample_, out);
-    for (size_t i = 0; i < 6; ++i) q[i] = out[i];
-    return last;
-  }
-
- private:
-  JointMotion& motion_;
-  ArmSample sample_;
-};
-
 }  // namespace
 
 RsiArm::RsiArm(const RsiArmConfig& config) : context_(rsi::readContext(config.context_path)) {
@@ -65,7 +43,7 @@ RsiArm::RsiArm(const RsiArmConfig& config) : context_(rsi::readContext(config.co
   if (!spec_ || spec_->family != model::RobotFamily::kKuka)
     throw std::invalid_argument("arm::RsiArm: \"" + config.model + "\" is not a KUKA model (kr6_r900_sixx, kr16_2)");
   link_ = std::make_unique<rsi::Link>(config_, config.link);
-  stream_ = std::make_unique<rsi::JointStream>(*link_, *spec_, rsi::axisCorrectionLimits(context_));
+  stream_ = std::make_unique<JointStream>(*link_, *spec_, rsi::axisCorrectionLimits(context_));
   rsi::DigitalIoMap map = rsi::digitalIoMap(context_, config_);
   if (!map.inputs.empty() || !map.outputs.empty()) io_ = std::make_unique<rsi::DigitalIo>(*link_, std::move(map));
   monitor_ = std::make_unique<rsi::SessionMonitor>(*link_, context_);
@@ -115,7 +93,7 @@ void RsiArm::fill(const double* values, size_t count, ArmSample& s, std::array<d
 
 bool RsiArm::latest(ArmState& out) const {
   rsi::RobSample rob;
-  rsi::StreamState stream;
+  StreamState stream;
   if (!link_->latest(rob) || !stream_->state(stream)) return false;
   std::array<double, 6> pose{};
   out.sample = ArmSample{};
@@ -148,12 +126,11 @@ size_t RsiArm::takeSamples(ArmSample* out, size_t max) {
 }
 
 void RsiArm::runJointMotion(JointMotion& motion) {
-  StreamMotion adapter(motion);
-  stream_->run(adapter);
+  stream_->run(motion);
 }
 
 MotionBounds RsiArm::motionBounds() const {
-  rsi::StreamState s;
+  StreamState s;
   if (!stream_->state(s))
     throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived; start the KRL program (RSI_ON, "
                              "RSI_MOVECORR) on the robot");

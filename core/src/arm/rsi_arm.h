@@ -10,9 +10,9 @@
 #include <string>
 
 #include "arm/arm.h"
+#include "arm/joint_stream.h"
 #include "rsi/config.h"
 #include "rsi/digital_io.h"
-#include "rsi/joint_stream.h"
 #include "rsi/link.h"
 #include "rsi/session_monitor.h"
 
@@ -38,6 +38,7 @@ class RsiArm : public Arm {
   void start();
   void stop();
 
+  void accept(ArmVisitor& visitor) override { visitor.visit(*this); }
   const model::RobotSpec& spec() const override { return *spec_; }
   Capabilities capabilities() const override { return capabilities_; }
   double cycleSeconds() const override { return stream_->cycleSeconds(); }
@@ -58,7 +59,7 @@ class RsiArm : public Arm {
   const rsi::Context& context() const { return context_; }
   const rsi::EthernetConfig& ethernetConfig() const { return config_; }
   rsi::Link& link() { return *link_; }
-  rsi::JointStream& stream() { return *stream_; }
+  JointStream& stream() { return *stream_; }
   rsi::DigitalIo* digitalIo() { return io_.get(); }  // nullptr: the context wires no IO
   // The session as the samples takeSamples() popped show it (waiting / running / stopped and why,
   // cycle, Delay, answer p99). The thread that calls takeSamples(), after it.
@@ -74,7 +75,7 @@ class RsiArm : public Arm {
   rsi::EthernetConfig config_;
   const model::RobotSpec* spec_ = nullptr;
   std::unique_ptr<rsi::Link> link_;
-  std::unique_ptr<rsi::JointStream> stream_;
+  std::unique_ptr<JointStream> stream_;
   std::unique_ptr<rsi::DigitalIo> io_;
   std::unique_ptr<rsi::SessionMonitor> monitor_;  // fed by takeSamples
   Slots slots_;

@@ -21,7 +21,7 @@
 #include "guide/admittance.h"
 #include "jog/ramp.h"
 #include "model/robot_spec.h"
-#include "rsi/joint_stream.h"
+#include "rsi/axis_correction.h"
 
 namespace xmate::jog {
 

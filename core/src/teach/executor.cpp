@@ -1,19 +1,21 @@
 // SPDX-License-Identifier: Apache-2.0
 // The executor's run loop and controls (executor.h): pre-flight, then one instruction after the
 // other with pauses between them, WAIT / SET_DO / WAIT_DI, failures turned into the report.
-// Motions are in executor_motion.cpp (xMate) and executor_rsi.cpp (KUKA), PATH in executor_path.cpp.
+// Motions go through the robot's port (robot_port.h), PATH is prepared in executor_path.cpp.
 #include "teach/executor.h"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <utility>
+#include <numbers>
 #include <thread>
 
 #include <xmate/exception.h>
 
+#include "teach/arm_port.h"
 #include "teach/program_io.h"
-#include "teach/robot_port.h"
+#include "teach/rci_port.h"
 
 namespace xmate::teach {
 namespace {
@@ -28,24 +30,6 @@ double secondsSince(Clock::time_point start) {
 struct ActiveGuard {
   std::atomic<bool>& flag;
   ~ActiveGuard() { flag.store(false); }
-};
-
-// An xMate through the vendor API.
-class RciPort : public RobotPort {
- public:
-  explicit RciPort(Robot& robot) : robot_(robot), spec_(model::robotSpec(robot.type())) {}
-  const model::RobotSpec& spec() const override { return spec_; }
-  Reading read() override {
-    const RCI::robot::RobotState s = robot_.receiveRobotState();
-    return {s.q, s.toolTobase_pos_m, s.psi_m};
-  }
-  std::array<double, 16> toolFrame() override { return robot_.toolFrame(); }
-  void setDO(int signal, bool value) override { robot_.setDO(RCI::robot::DOSIGNAL(uint8_t(signal)), value); }
-  bool getDI(int signal) override { return robot_.getDI(RCI::robot::DISIGNAL(uint8_t(signal))); }
-
- private:
-  Robot& robot_;
-  const model::RobotSpec& spec_;
 };
 
 }  // namespace
@@ -105,16 +89,18 @@ bool Executor::waitWhilePaused() {
 
 RunReport Executor::run(Robot& robot, const Program& program, const ExecutorOptions& options) {
   RciPort port(robot);
-  return runOn(port, &robot, nullptr, program, options);
+  return run(port, program, options);
 }
 
-RunReport Executor::runOn(RobotPort& port, Robot* robot, rsi::JointStream* stream, const Program& program,
-                          const ExecutorOptions& options) {
+RunReport Executor::run(arm::Arm& arm, const Program& program, const ExecutorOptions& options) {
+  const std::unique_ptr<RobotPort> port = armPort(arm, program);
+  return run(*port, program, options);
+}
+
+RunReport Executor::run(RobotPort& port, const Program& program, const ExecutorOptions& options) {
   if (active_.exchange(true)) throw std::logic_error("Executor::run: a program is already running on this executor");
   ActiveGuard guard{active_};
   port_ = &port;
-  robot_ = robot;
-  stream_ = stream;
   return runProgram(program, options);
 }
 
@@ -205,8 +191,7 @@ InstructionReport Executor::execute(const Program& program, size_t index) {
       case InstructionType::kMoveJ:
       case InstructionType::kMoveL:
       case InstructionType::kMoveC:
-        if (robot_) runMotion(program, in, r);
-        else runRsiMotion(program, in, r);
+        runMotion(program, in, r);
         break;
       case InstructionType::kPath:
         runPath(program, index, r);
@@ -238,6 +223,25 @@ InstructionReport Executor::execute(const Program& program, size_t index) {
     // The robot may be unreachable after a failure; the reached pose then stays zero.
   }
   return r;
+}
+
+model::ArmKinematics Executor::motionModel(const Program& program) const {
+  model::ArmKinematics model(port_->spec());
+  model.SetCoor(program.has_tool ? program.tool : port_->toolFrame());  // the TCP its poses are poses of
+  model.SetSpeedCheckInterval(0);
+  if (has_soft_limits_) {
+    std::array<double, 7> upper{}, lower{};
+    for (int i = 0; i < 7; ++i) {
+      upper[i] = soft_upper_[i] * 180.0 / std::numbers::pi;
+      lower[i] = soft_lower_[i] * 180.0 / std::numbers::pi;
+    }
+    model.SetJointLimit(upper, lower);  // IK of pose targets as the pre-flight resolved them
+  }
+  return model;
+}
+
+void Executor::runMotion(const Program& program, const Instruction& in, InstructionReport& report) {
+  port_->move(program, in, motionModel(program), *this, report);
 }
 
 void Executor::runWait(const Instruction& in, InstructionReport& r) {

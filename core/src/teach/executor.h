@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// The executor: runs a program on the calling thread through the robot's real-time loop
-// with the jerk-limited planners -- MOVEJ in joint position mode (xmate/joint_motion.h), MOVEL and
-// MOVEC in Cartesian position mode (planning/cartesian_trajectory.h, timed within the joint limits
-// by client::planWithinJointLimits), PATH re-timed within the joint limits (path_timing.h) after a
-// joint move to its start -- after a pre-flight that must find no problem. Another thread
-// may pause, resume, stop, single-step and change the speed override at any time, and read the
-// progress without locks. docs/teach.md describes the behaviour.
+// The executor: runs a program on the calling thread through one robot port (robot_port.h; one
+// per robot family) after a pre-flight that must find no problem -- MOVEJ / MOVEL / MOVEC with the
+// jerk-limited planners, PATH re-timed within the joint limits (path_timing.h) after a joint move to
+// its start, WAIT, SET_DO, WAIT_DI. Another thread may pause, resume, stop, single-step and change
+// the speed override at any time, and read the progress without locks. docs/teach.md describes
+// the behaviour.
 #pragma once
 
 #include <array>
@@ -21,21 +20,14 @@
 #include "model/arm_kinematics.h"
 #include "teach/preflight.h"
 #include "teach/program.h"
+#include "teach/robot_port.h"
 #include "teach/time_scaling.h"
 
 namespace xmate::arm {
 class Arm;
-class RsiArm;
-}
-namespace xmate::rsi {
-class JointStream;
 }
 
 namespace xmate::teach {
-
-class RobotPort;
-class PathRecording;
-struct PathTiming;
 
 // progress() reads these without locks from any thread.
 static_assert(std::atomic<double>::is_always_lock_free && std::atomic<long>::is_always_lock_free);
@@ -119,26 +111,26 @@ struct Progress {
   double speed_override = 1.0;
 };
 
-// One executor can run many programs, one at a time, on any robot. The GUI keeps one for its
-// Program panel (controls and progress work at any time) and calls run() from its motion worker
-// (Session::runMotion), which hands it the robot.
-class Executor {
+// One executor can run many programs, one at a time, on any robot, through one port
+// (robot_port.h) that the robot's family implements. The GUI keeps one for its Program panel
+// (controls and progress work at any time) and calls run() from its motion worker
+// (Session::runArmMotion), which hands it the arm.
+class Executor : private MotionControl {
  public:
   Executor() = default;
   Executor(const Executor&) = delete;
   Executor& operator=(const Executor&) = delete;
 
-  // Runs the program on `robot` to its end (blocking, on the calling thread). Throws nothing for
-  // run-time failures (they are in the report); std::logic_error when another run() is active.
-  RunReport run(Robot& robot, const Program& program, const ExecutorOptions& options = {});
-  // The same on a KUKA over RSI, whose link is running: motions are streamed as axis corrections
-  // through its joint stream (executor_rsi.cpp); SET_DO and WAIT_DI reach the signals its context
-  // wires to the PC (none wired: the program fails at the first of them, saying so). The options'
-  // soft limits and box apply to the pre-flight.
-  RunReport run(arm::RsiArm& arm, const Program& program, const ExecutorOptions& options = {});
-  // Either of the above for an arm of either family (arm::RciArm: its xmate::Robot; arm::RsiArm),
-  // for callers that hold an arm::Arm (the window). std::invalid_argument for another kind of arm.
+  // Runs the program through `port` to its end (blocking, on the calling thread). Throws nothing
+  // for run-time failures (they are in the report); std::logic_error when another run() is active.
+  // The options' soft limits and box apply to the pre-flight.
+  RunReport run(RobotPort& port, const Program& program, const ExecutorOptions& options = {});
+  // The same on an arm of either family, through its port (arm_port.h). On a KUKA over RSI the
+  // link must be running; SET_DO and WAIT_DI reach the signals its context wires to the PC (none
+  // wired: the program fails at the first of them, saying so).
   RunReport run(arm::Arm& arm, const Program& program, const ExecutorOptions& options = {});
+  // The same on a robot of the vendor API (an xMate), through its port (rci_port.h).
+  RunReport run(Robot& robot, const Program& program, const ExecutorOptions& options = {});
 
   // ---- Thread-safe controls (any thread, any time; no effect when not running) ----------------
   void pause();                       // smooth stop on the path; holds until resume()/stop()
@@ -150,8 +142,6 @@ class Executor {
 
  private:
   RobotPort* port_ = nullptr;             // during run()
-  Robot* robot_ = nullptr;                // during run() on an xMate
-  rsi::JointStream* stream_ = nullptr;    // during run() on a KUKA
   const std::atomic<bool>* stop_token_ = nullptr;  // during run(): ExecutorOptions::stop_token
   bool has_soft_limits_ = false;  // during run(): the options' soft limits, for IK of pose targets
   std::array<double, 7> soft_lower_{}, soft_upper_{};
@@ -168,18 +158,17 @@ class Executor {
   double fraction_from_ = 0, fraction_span_ = 1;
 
   void setState(RunState s) { state_.store(int(s)); }
-  // A motion's progress (0..1) as the instruction's. Real-time safe.
-  void storeMotionFraction(double f) {
-    fraction_.store(fraction_from_ + fraction_span_ * f, std::memory_order_relaxed);
-  }
   // stop() was called or the options' stop token is set. Real-time safe.
   bool stopping() const {
     return stop_requested_.load(std::memory_order_relaxed) ||
            (stop_token_ && stop_token_->load(std::memory_order_relaxed));
   }
-  // On the real-time thread, each cycle of a motion: what the time scaling's k should go to (0 to
-  // pause or stop, else the override), setting the state to show.
-  double scalingTarget(const TimeScaling& scaling) {
+
+  // ---- MotionControl: the port's motion asks these on the real-time thread each cycle ----------
+  double speedOverride() const override { return override_.load(std::memory_order_relaxed); }
+  // What the time scaling's k should go to (0 to pause or stop, else the override), setting the
+  // state to show.
+  double scalingTarget(const TimeScaling& scaling) override {
     const bool stop_now = stopping();
     const bool pausing = pause_requested_.load(std::memory_order_relaxed);
     if (stop_now) setState(RunState::kStopping);
@@ -188,48 +177,27 @@ class Executor {
     return stop_now || pausing ? 0.0 : override_.load(std::memory_order_relaxed);
   }
   // Stop requested and the ramp has reached zero: the motion ends where it stands.
-  bool stoppedHere(const TimeScaling& scaling) const {
+  bool stoppedHere(const TimeScaling& scaling) const override {
     return stopping() && scaling.value() == 0 && scaling.settled();
   }
+  // A motion's progress (0..1) as the instruction's.
+  void storeFraction(double f) override {
+    fraction_.store(fraction_from_ + fraction_span_ * f, std::memory_order_relaxed);
+  }
+
   // Blocks while paused (between instructions); false when stop() ended the wait.
   bool waitWhilePaused();
-  // Both run()s: refuses a second run, binds the robot for this run, and runs the program.
-  RunReport runOn(RobotPort& port, Robot* robot, rsi::JointStream* stream, const Program& program,
-                  const ExecutorOptions& options);
   RunReport runProgram(const Program& program, const ExecutorOptions& options);
   InstructionReport execute(const Program& program, size_t index);
   // The model motions plan with: the program's tool (else the robot's), the soft limits.
-  model::ArmKinematics motionModel(const Program& program, const model::RobotSpec& spec,
-                                   const std::array<double, 16>& robot_tool) const;
-  // MOVEJ, MOVEL, MOVEC (also a PATH's lead-in, which is a MOVEJ built for it).
-  void runMotion(const Program& program, const Instruction& in, InstructionReport& report);     // xMate (RCI)
-  void runRsiMotion(const Program& program, const Instruction& in, InstructionReport& report);  // KUKA (RSI)
+  model::ArmKinematics motionModel(const Program& program) const;
+  // MOVEJ, MOVEL, MOVEC (also a PATH's lead-in, which is a MOVEJ built for it), through the port.
+  void runMotion(const Program& program, const Instruction& in, InstructionReport& report);
   // PATH (executor_path.cpp): re-timed, checked, the lead-in joint move to its first sample, then
-  // the timing streamed and the measured joints compared with the path.
+  // the timing streamed through the port and the measured joints compared with the path.
   void runPath(const Program& program, size_t index, InstructionReport& report);
   // The lead-in joint move to a PATH's first sample; false when it was stopped (the report says so).
   bool leadIn(const Program& program, const Instruction& in, InstructionReport& report);
-  // A PATH's timing streamed in joint position mode on an xMate (executor_motion.cpp) or as axis
-  // corrections on a KUKA (executor_rsi.cpp), each cycle's measured joints into `recording`; both
-  // fill the report's motion fields as the other motions do.
-  void streamPath(const Program& program, const JointPath& path, const PathTiming& timing, PathRecording& recording,
-                  InstructionReport& report);
-  void streamRsiPath(const Program& program, const PathTiming& timing, PathRecording& recording,
-                     InstructionReport& report);
-  // Throws MotionException naming the path time when the RSI session cannot follow the timing
-  // (rsi::JointStream::checkSample at the RSI cycle). Before anything moves.
-  void checkRsiPath(const PathTiming& timing, double rate_hz);
-  // MOVEJ's and PATH's streaming on an xMate (executor_motion.cpp, the only place that
-  // instantiates it): the plan in joint position mode at the scaled plan time; returns true when
-  // stop() ended it on the way.
-  template <class Plan, class Clock, class OnState>
-  bool streamJointPlan(Plan& plan, Clock& clock, double share, OnState on_state);
-  // Every motion's streaming on a KUKA (executor_rsi.cpp): joints every 1 ms of plan time, one
-  // command per RSI cycle at the scaled plan time, in the RSI session it was planned in; fills the
-  // report's motion fields.
-  void streamRsiGrid(const std::vector<std::array<double, 7>>& grid, double share, bool joint_motion,
-                     const model::ArmKinematics& model, uint32_t session, InstructionReport& report,
-                     PathRecording* recording);
   void runWait(const Instruction& in, InstructionReport& report);
   void runWaitDi(const Program& program, size_t index, InstructionReport& report);
   void recordReached(InstructionReport& report);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The executor's PATH (executor.h, docs/teach.md "Replaying a path"), on either robot family: the
-// path re-timed within the limits (timePath), on a KUKA checked against what the RSI session can
-// reach, then a lead-in joint move to its first sample, then the timing streamed with the same
+// path re-timed within the limits (timePath), checked by the port (on a KUKA: against what the RSI
+// session can reach), then a lead-in joint move to its first sample, then the timing streamed with the same
 // plan-time machinery as every motion (pause, stop, override, single step), and afterwards the
 // measured joints compared with the path (pathDeviation).
 #include <algorithm>
@@ -44,7 +44,7 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
   report.slowest_pace = timing.slowest;
   report.slowed_share = timing.slowed_share;
   report.slowest_at = timing.slowest_at;
-  if (stream_) checkRsiPath(timing, in.path.rate_hz);  // before anything moves
+  port_->checkPath(timing, in.path.rate_hz);  // before anything moves
 
   // One progress for the instruction: the lead-in's share of it as long as its joint move takes
   // (the same planner as the move itself), the path the rest.
@@ -63,10 +63,9 @@ void Executor::runPath(const Program& program, size_t index, InstructionReport& 
   fraction_span_ = 1 - fraction_from_;
 
   PathRecording recording(timing);
-  if (robot_) streamPath(program, in.path, timing, recording, report);
-  else streamRsiPath(program, timing, recording, report);
+  const model::ArmKinematics model = motionModel(program);
+  port_->streamPath(in.path, timing, model, *this, recording, report);
   if (recording.measured().empty()) return;
-  const model::ArmKinematics model = motionModel(program, spec, port_->toolFrame());
   const PathDeviation deviation = pathDeviation(spline, model, recording.measured(), recording.hints());
   report.path_joint_deviation = deviation.joint;
   report.path_tcp_deviation = deviation.tcp;
@@ -82,8 +81,7 @@ bool Executor::leadIn(const Program& program, const Instruction& in, Instruction
   move.speed = in.speed;
   InstructionReport lead;
   lead.status = InstructionStatus::kRunning;
-  if (robot_) runMotion(program, move, lead);
-  else runRsiMotion(program, move, lead);
+  runMotion(program, move, lead);
   report.lead_in = lead.duration;
   if (lead.status != InstructionStatus::kStopped) return true;
   report.status = InstructionStatus::kStopped;

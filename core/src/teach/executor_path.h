@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Internal to the executor (executor_path.cpp, executor_motion.cpp, executor_rsi.cpp): what a PATH
+// Internal to the executor and its ports (executor_path.cpp, rci_port.cpp, rsi_port.cpp): what a PATH
 // replay records on the real-time thread -- the measured joints and the path time the plan
 // commanded then -- into storage reserved before the motion, for pathDeviation afterwards.
 #pragma once

@@ -35,7 +35,7 @@ struct TraceOptions {
   bool has_tcp = false;
   std::array<double, 16> tcp = kIdentityPose;
   // The joints the session can reach (on a KUKA over RSI: the start pose plus the context's
-  // correction limits, rsi::JointStream::reachableBounds), rad. PATH samples are checked against
+  // correction limits, arm::JointStream::reachableBounds), rad. PATH samples are checked against
   // them.
   bool has_joint_bounds = false;
   std::array<double, 7> joint_lower{}, joint_upper{};

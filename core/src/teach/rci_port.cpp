@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The executor's motions (executor.h): MOVEJ streams the joint S-curve in joint position mode,
-// a PATH its re-timed joints the same way (executor_path.cpp prepares it), MOVEL/MOVEC stream the
+// The executor's port to an xMate (rci_port.h): MOVEJ streams the joint S-curve in joint position
+// mode, a PATH its re-timed joints the same way (executor_path.cpp prepares it), MOVEL/MOVEC stream the
 // timed Cartesian path in Cartesian position mode. All sample their plan at a plan time that
 // advances by k * dt per cycle (TimeScaling), which is how pause, stop and the speed override act
 // smoothly on the path. After a stall of the client's loop the command continues
@@ -9,7 +9,6 @@
 // nothing.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <xmate/exception.h>
 #include <xmate/joint_motion.h>
@@ -24,6 +23,7 @@
 #include "planning/cartesian_trajectory.h"
 #include "teach/executor.h"
 #include "teach/executor_path.h"
+#include "teach/rci_port.h"
 #include "teach/path_timing.h"
 #include "teach/preflight.h"
 #include "teach/targets.h"
@@ -182,31 +182,31 @@ void finishMotion(Robot& robot, int dof, double seconds, const Tracking& trackin
   settleAtTarget(robot, dof, report);
 }
 
-}  // namespace
-
-template <class Plan, class Clock, class OnState>
-bool Executor::streamJointPlan(Plan& plan, Clock& clock, double share, OnState on_state) {
-  const model::RobotSpec& spec = model::robotSpec(robot_->type());
+// MOVEJ's and PATH's streaming: the plan in joint position mode at the scaled plan time; returns
+// true when a stop ended it on the way.
+template <class Plan, class OnState>
+bool streamJointPlan(Robot& robot, const model::RobotSpec& spec, MotionControl& control, Plan& plan, ScaledClock& clock,
+                     double share, OnState on_state) {
   const int dof = spec.dof;
   const client::StallBridge::Limits limits = client::jointBridgeLimits(spec, share);
   client::StallBridge bridge(dof, limits);
   client::StallBridge::Vec last = plan.at(0);
   bool stopped = false;
   auto planAt = [&](double time) { return plan.at(time); };
-  robot_->startMove(CM::kJointPosition, MM::kJointPosition);
-  client::controlByMessageId(*robot_, JointControl([&](RobotState s) -> JointPositions {
+  robot.startMove(CM::kJointPosition, MM::kJointPosition);
+  client::controlByMessageId(robot, JointControl([&](RobotState s) -> JointPositions {
     const bool starting = clock.calls == 0;
     limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, dof, 1.0);
-    const double t = clock.advance(s, scalingTarget(clock.scaling));
+    const double t = clock.advance(s, control.scalingTarget(clock.scaling));
     if (starting && clock.calls == 1) {
       plan.startFrom(s.q);  // where the motion really starts
       last = s.q;
       bridge.startAt(s.message_id, s.q_c);  // the "hold still" command the controller has now
     }
     on_state(s, t);
-    storeMotionFraction(std::min(1.0, t / plan.total()));
+    control.storeFraction(std::min(1.0, t / plan.total()));
     JointPositions out;
-    if (stoppedHere(clock.scaling) && !bridge.bridging()) {
+    if (control.stoppedHere(clock.scaling) && !bridge.bridging()) {
       stopped = true;
       out.q = last;
       out.motion_finished = true;
@@ -226,27 +226,26 @@ bool Executor::streamJointPlan(Plan& plan, Clock& clock, double share, OnState o
   return stopped;
 }
 
-model::ArmKinematics Executor::motionModel(const Program& program, const model::RobotSpec& spec,
-                                           const std::array<double, 16>& robot_tool) const {
-  model::ArmKinematics model(spec);
-  model.SetCoor(program.has_tool ? program.tool : robot_tool);  // the TCP its poses are poses of
-  model.SetSpeedCheckInterval(0);
-  if (has_soft_limits_) {
-    std::array<double, 7> upper{}, lower{};
-    for (int i = 0; i < 7; ++i) {
-      upper[i] = soft_upper_[i] * 180.0 / std::numbers::pi;
-      lower[i] = soft_lower_[i] * 180.0 / std::numbers::pi;
-    }
-    model.SetJointLimit(upper, lower);  // IK of pose targets as the pre-flight resolved them
-  }
-  return model;
+}  // namespace
+
+RciPort::RciPort(Robot& robot) : robot_(robot), spec_(model::robotSpec(robot.type())) {}
+
+RobotPort::Reading RciPort::read() {
+  const RobotState s = robot_.receiveRobotState();
+  return {s.q, s.toolTobase_pos_m, s.psi_m};
 }
 
-void Executor::runMotion(const Program& program, const Instruction& in, InstructionReport& report) {
-  const model::RobotSpec& spec = model::robotSpec(robot_->type());
+std::array<double, 16> RciPort::toolFrame() { return robot_.toolFrame(); }
+
+void RciPort::setDO(int signal, bool value) { robot_.setDO(RCI::robot::DOSIGNAL(uint8_t(signal)), value); }
+
+bool RciPort::getDI(int signal) { return robot_.getDI(RCI::robot::DISIGNAL(uint8_t(signal))); }
+
+void RciPort::move(const Program& program, const Instruction& in, const model::ArmKinematics& model,
+                   MotionControl& control, InstructionReport& report) {
+  const model::RobotSpec& spec = spec_;
   const int dof = spec.dof;
-  const model::ArmKinematics model = motionModel(program, spec, robot_->toolFrame());
-  const RobotState state = robot_->receiveRobotState();
+  const RobotState state = robot_.receiveRobotState();
   // The tool may have been changed since the pre-flight (another client, the pendant).
   if (usesTool(in)) {
     const ToolMismatch mismatch = toolMismatch(program, state.q, state.toolTobase_pos_m);
@@ -254,7 +253,7 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
   }
 
   const double share = in.speed * kSpeedShare;
-  ScaledClock clock(override_.load(), safeScalingRate(share, accelOverVelocity(in.type == InstructionType::kMoveJ, spec)));
+  ScaledClock clock(control.speedOverride(), safeScalingRate(share, accelOverVelocity(in.type == InstructionType::kMoveJ, spec)));
   bool stopped = false;
   Tracking tracking{dof};
   auto track = [&](const RobotState& s) { tracking.add(s); };
@@ -265,33 +264,34 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
     if (rc != XmateModel::kIkOk)
       throw MotionException(std::string("the target pose cannot be reached: ") + client::ikFailureText(rc) +
                             " (IK code " + std::to_string(rc) + ")");
-    client::LimitWatch watch = robotLimits(*robot_, model, state.q);
+    client::LimitWatch watch = robotLimits(robot_, model, state.q);
     requireWithinLimits(client::checkJointLine(watch, state.q, goal, dof));
-    JointMotionGenerator generator(share, goal, robot_->type());
+    JointMotionGenerator generator(share, goal, robot_.type());
     JointGoalPlan plan{generator, state.q, goal, dof};
     plan.startFrom(state.q);
     if (plan.total() > 0)
-      stopped = streamJointPlan(plan, clock, share, [&](const RobotState& s, double) { track(s); });
+      stopped = streamJointPlan(robot_, spec, control, plan, clock, share,
+                                [&](const RobotState& s, double) { track(s); });
   } else {
     // Planned once the controller accepted the motion, from where the arm is then: the previous
     // motion's stop may have taken it a little further while startMove was retried. Until Control()
     // the client answers every state with "hold still".
-    robot_->startMove(CM::kCartesianPosition, MM::kCartesianPosition);
+    robot_.startMove(CM::kCartesianPosition, MM::kCartesianPosition);
     planning::CartesianPath path;
     planning::CartesianTrajectory trajectory;
     try {
-      const std::array<double, 7> q_now = robot_->receiveRobotState().q;
+      const std::array<double, 7> q_now = robot_.receiveRobotState().q;
       path = cartesianPath(in, model, q_now);
       client::JointSamples joints;
       trajectory = client::planWithinJointLimits(typeName(in.type), path, share, model, q_now, &joints);
-      client::LimitWatch watch = robotLimits(*robot_, model, q_now);
+      client::LimitWatch watch = robotLimits(robot_, model, q_now);
       requireWithinLimits(client::checkJointPath(watch, joints));
     } catch (...) {
-      endStartedMotion(*robot_);
+      endStartedMotion(robot_);
       throw;
     }
     const double total = planning::duration(trajectory);
-    if (!(total > 0)) endStartedMotion(*robot_);
+    if (!(total > 0)) endStartedMotion(robot_);
     if (total > 0) {
       CartesianPose last;
       last.toolTobase_pos_c = planning::poseToRowMajor(path.start.pose);
@@ -304,15 +304,15 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
         const planning::CartesianSample sample = planning::sampleTrajectory(trajectory, time);
         return client::cartesianCoordinates(sample.pose, sample.psi, reference);
       };
-      client::controlByMessageId(*robot_, CartesianControl([&](RobotState s) -> CartesianPose {
+      client::controlByMessageId(robot_, CartesianControl([&](RobotState s) -> CartesianPose {
         track(s);
         const bool starting = clock.calls == 0;
         limitScalingAtPlan(clock.scaling, clock.plan_time, planAt, limits, 7, kCartesianBrakingShare);
-        const double t = clock.advance(s, scalingTarget(clock.scaling));
+        const double t = clock.advance(s, control.scalingTarget(clock.scaling));
         if (starting && clock.calls == 1)
           bridge.startAt(s.message_id, client::cartesianCoordinates(s.toolTobase_pos_c, s.psi_c, reference));
-        storeMotionFraction(std::min(1.0, t / total));
-        if (stoppedHere(clock.scaling) && !bridge.bridging()) {
+        control.storeFraction(std::min(1.0, t / total));
+        if (control.stoppedHere(clock.scaling) && !bridge.bridging()) {
           stopped = true;
           return MotionFinished(last);
         }
@@ -330,23 +330,22 @@ void Executor::runMotion(const Program& program, const Instruction& in, Instruct
       }));
     }
   }
-  finishMotion(*robot_, dof, clock.elapsed(), tracking, stopped, report);
+  finishMotion(robot_, dof, clock.elapsed(), tracking, stopped, report);
 }
 
-void Executor::streamPath(const Program& program, const JointPath& path, const PathTiming& timing,
-                          PathRecording& recording, InstructionReport& report) {
-  const model::RobotSpec& spec = model::robotSpec(robot_->type());
-  const model::ArmKinematics model = motionModel(program, spec, robot_->toolFrame());
-  client::LimitWatch watch = robotLimits(*robot_, model, robot_->receiveRobotState().q);
+void RciPort::streamPath(const JointPath& path, const PathTiming& timing, const model::ArmKinematics& model,
+                         MotionControl& control, PathRecording& recording, InstructionReport& report) {
+  client::LimitWatch watch = robotLimits(robot_, model, robot_.receiveRobotState().q);
   requireWithinLimits(client::checkJointPath(watch, path.q));
-  ScaledClock clock(override_.load(), safeScalingRate(kPathLimitShare, accelOverVelocity(true, spec)));
-  Tracking tracking{spec.dof};
+  ScaledClock clock(control.speedOverride(), safeScalingRate(kPathLimitShare, accelOverVelocity(true, spec_)));
+  Tracking tracking{spec_.dof};
   TimingPlan plan{timing};
-  const bool stopped = streamJointPlan(plan, clock, kPathLimitShare, [&](const RobotState& s, double plan_time) {
-    tracking.add(s);
-    recording.add(plan_time, s.q);
-  });
-  finishMotion(*robot_, spec.dof, clock.elapsed(), tracking, stopped, report);
+  const bool stopped = streamJointPlan(robot_, spec_, control, plan, clock, kPathLimitShare,
+                                       [&](const RobotState& s, double plan_time) {
+                                         tracking.add(s);
+                                         recording.add(plan_time, s.q);
+                                       });
+  finishMotion(robot_, spec_.dof, clock.elapsed(), tracking, stopped, report);
 }
 
 }  // namespace xmate::teach

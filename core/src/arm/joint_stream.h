@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// rsi::JointStream moves a KUKA over RSI by joint positions: on the link's thread it turns the joint
-// command of the running CycleMotion into the axis corrections AK (the total since RSI_ON, in
+// arm::JointStream moves a KUKA over RSI by joint positions: on the link's thread it turns the joint
+// command of the running arm::JointMotion into the axis corrections AK (the total since RSI_ON, in
 // degrees) and holds still between motions; before a motion starts, checkMotion() samples it at the
 // RSI cycle against the axis speeds and the context's AXISCORR limits. docs/rsi.md, "Motion".
 #pragma once
@@ -11,25 +11,14 @@
 #include <cstdint>
 #include <string>
 
+#include "arm/arm.h"
 #include "model/robot_spec.h"
 #include "net/seqlock.h"
+#include "rsi/axis_correction.h"
 #include "rsi/config.h"
 #include "rsi/link.h"
 
-namespace xmate::rsi {
-
-// The total axis correction the context lets through, per axis (rad), and what sets each limit
-// ("AXISCORR1's UpperLimA2", "AXISCORRMON1's MaxA2").
-struct AxisCorrectionLimits {
-  std::array<double, 6> lower{}, upper{};
-  std::array<std::string, 6> lower_by, upper_by;
-};
-
-// The first AXISCORR object's LowerLimA1..A6 / UpperLimA1..A6 (KUKA's default +-5 deg where one is
-// not given), tightened by the first AXISCORRMON's MaxA1..A6 where it has one (it stops RSI beyond
-// it). Throws ConfigError naming the file when the context has no AXISCORR object (it then cannot
-// move the robot by axis corrections) or a limit is not a number. Set-up; any thread.
-AxisCorrectionLimits axisCorrectionLimits(const Context& context);
+namespace xmate::arm {
 
 // What the stream knows on a cycle (rad).
 struct StreamState {
@@ -43,20 +32,11 @@ struct StreamState {
   uint64_t ipoc_step = 0;  // IPOC's last advance: a KRC's clock advances by the cycle in ms (4 or 12)
 };
 
-// A motion streamed one command per RSI cycle.
-class CycleMotion {
- public:
-  virtual ~CycleMotion() = default;
-  // The link's thread, real-time: no allocation, no lock. Writes the joints (rad) for this cycle;
-  // returns true when that was the last command of the motion.
-  virtual bool command(const StreamState& state, std::array<double, 6>& q) = 0;
-};
-
 class JointStream {
  public:
   // Installs itself as the link's callback: call before link.start(). The link must send DEF_AIPos.
   // Throws std::invalid_argument if the config does not send DEF_AIPos or receive AK.A1..A6.
-  JointStream(Link& link, const model::RobotSpec& spec, const AxisCorrectionLimits& limits);
+  JointStream(rsi::Link& link, const model::RobotSpec& spec, const rsi::AxisCorrectionLimits& limits);
 
   // Any thread, lock-free. False until the first <Rob> arrived.
   bool state(StreamState& out) const { return state_.load(out) > 0; }
@@ -67,7 +47,7 @@ class JointStream {
   // motion would run at the wrong speed), or when RSI stops or restarts during the motion (the robot
   // then holds where RSI left it). `session` (non-zero): the RSI session the motion was planned in
   // (StreamState::session); a motion is never streamed into another one.
-  void run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot = std::chrono::seconds(5),
+  void run(JointMotion& motion, std::chrono::milliseconds wait_for_robot = std::chrono::seconds(5),
            uint32_t session = 0);
 
   // Refusal text (empty when fine) for one joint sample (6 values, rad) `spacing` seconds after
@@ -79,28 +59,29 @@ class JointStream {
 
   double cycleSeconds() const { return cycle_s_; }
   const model::RobotSpec& spec() const { return spec_; }
-  const AxisCorrectionLimits& limits() const { return limits_; }
+  const rsi::AxisCorrectionLimits& limits() const { return limits_; }
   // The joints (rad) this RSI session can reach: the start pose q_on plus the correction limits,
   // within the axis ranges (entries past the sixth: 0). False until the first <Rob>. Any thread,
   // lock-free, real-time safe.
   bool reachableBounds(std::array<double, 7>& lower, std::array<double, 7>& upper) const;
 
  private:
-  Correction onCycle(const RobDecoder& rob);
+  rsi::Correction onCycle(const rsi::RobDecoder& rob);
 
-  Link& link_;
+  rsi::Link& link_;
   const model::RobotSpec& spec_;
-  const AxisCorrectionLimits limits_;
+  const rsi::AxisCorrectionLimits limits_;
   double cycle_s_;
   std::array<int, 6> actual_slots_{}, set_slots_{};
   // The link's thread's own values.
   StreamState now_;
   std::array<double, 6> correction_{};  // rad, total since RSI_ON
-  std::atomic<CycleMotion*> motion_{nullptr};
+  ArmSample sample_;                    // what the motion is given each cycle
+  std::atomic<JointMotion*> motion_{nullptr};
   std::atomic<uint32_t> motion_session_{0};  // the session motion_ belongs to
   std::atomic<bool> motion_done_{false};
   std::atomic<bool> in_motion_{false};  // the link's thread may be using motion_ (see onCycle)
   net::Seqlock<StreamState> state_;
 };
 
-}  // namespace xmate::rsi
+}  // namespace xmate::arm

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The executor on a KUKA over RSI (executor.h): every motion becomes joints every 1 ms of plan time
+// The executor's port to a KUKA over RSI (rsi_port.h): every motion becomes joints every 1 ms of plan time
 // -- MOVEJ from planning::JointLine, MOVEL/MOVEC through IK of the timed Cartesian path, a PATH
 // from its re-timing (executor_path.cpp) -- checked at the RSI cycle against the axis ranges,
 // speeds and the context's AXISCORR limits before it starts, then streamed one command per RSI
-// cycle by rsi::JointStream. The plan time advances by k * cycle as on the xMate, so pause, stop and
+// cycle by arm::JointStream. The plan time advances by k * cycle as on the xMate, so pause, stop and
 // the override act the same way. The per-cycle code runs on the link's real-time thread: atomics,
 // locals and the precomputed joints only.
 #include <algorithm>
@@ -16,16 +16,14 @@
 
 #include "client/move_check.h"
 #include "planning/joint_line.h"
-#include "arm/rci_arm.h"
-#include "arm/rsi_arm.h"
 #include "rsi/digital_io.h"
-#include "rsi/joint_stream.h"
+#include "arm/joint_stream.h"
 #include "teach/executor.h"
 #include "teach/executor_path.h"
 #include "teach/path_timing.h"
 #include "teach/plan_scaling.h"
 #include "teach/settle.h"
-#include "teach/robot_port.h"
+#include "teach/rsi_port.h"
 #include "teach/targets.h"
 
 namespace xmate::teach {
@@ -33,93 +31,52 @@ namespace {
 
 constexpr double kGridDt = 1e-3;  // plan time between two precomputed joint samples
 
-// A KUKA through its RSI stream. Its TCP is the model's at the commanded joints with the program's
-// tool (RSI does not tell the PC which tool the controller has active); its digital IO is what the
-// context wires to the PC (rsi::DigitalIo).
-class RsiPort : public RobotPort {
- public:
-  RsiPort(rsi::JointStream& stream, rsi::DigitalIo* io, const std::array<double, 16>& tool)
-      : stream_(stream), io_(io), model_(stream.spec()) {
-    model_.SetCoor(tool);
-    tool_ = tool;
-  }
-  const model::RobotSpec& spec() const override { return stream_.spec(); }
-  Reading read() override {
-    rsi::StreamState s;
-    if (!stream_.state(s))
-      throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived; start the KRL program (RSI_ON, "
-                               "RSI_MOVECORR) on the robot");
-    Reading r;
-    for (size_t i = 0; i < 6; ++i) r.q[i] = s.q[i];
-    r.tcp = model_.GetCartPose(r.q);
-    return r;
-  }
-  std::array<double, 16> toolFrame() override { return tool_; }
-  void setDO(int signal, bool value) override { io().setOutput(signal, value); }
-  bool getDI(int signal) override { return io().input(signal); }
-  bool reachableBounds(std::array<double, 7>& lower, std::array<double, 7>& upper) override {
-    return stream_.reachableBounds(lower, upper);
-  }
-
- private:
-  rsi::DigitalIo& io() {
-    if (!io_)
-      throw std::runtime_error("the RSI context wires no digital inputs or outputs to the PC: wire DIGIN / DIGOUT "
-                               "objects to the ETHERNET object (as resources/rsi/rci_replay.rsi.xml does), or "
-                               "remove SET_DO and WAIT_DI from the program");
-    return *io_;
-  }
-  rsi::JointStream& stream_;
-  rsi::DigitalIo* io_;
-  model::ArmKinematics model_;
-  std::array<double, 16> tool_{};
-};
-
 // The stream's newest state; MotionException when RSI is not running (no <Rob> yet).
-rsi::StreamState runningState(const rsi::JointStream& stream) {
-  rsi::StreamState state;
+arm::StreamState runningState(const arm::JointStream& stream) {
+  arm::StreamState state;
   if (!stream.state(state)) throw MotionException("RSI is not running: start the KRL program on the robot");
   return state;
 }
 
-// Calls a lambda each cycle (rsi::CycleMotion for the link's thread).
+// Calls a lambda each cycle (an arm::JointMotion for the link's thread).
 template <class F>
-class LambdaMotion : public rsi::CycleMotion {
+class LambdaMotion : public arm::JointMotion {
  public:
   explicit LambdaMotion(F& f) : f_(f) {}
-  bool command(const rsi::StreamState& s, std::array<double, 6>& q) override { return f_(s, q); }
+  bool command(const arm::ArmSample& s, std::array<double, 7>& q) override { return f_(s, q); }
 
  private:
   F& f_;
 };
 
-double maxDifference(const std::array<double, 6>& a, const std::array<double, 6>& b) {
+// The largest difference of the six axes. Real-time safe.
+double maxDifference(const std::array<double, 7>& a, const std::array<double, 7>& b) {
   double m = 0;
   for (size_t i = 0; i < 6; ++i) m = std::max(m, std::abs(a[i] - b[i]));
   return m;
 }
 
-// Six axes as seven joints (the seventh 0). Real-time safe.
+// How far apart the TCP is at two sets of axes (m). Real-time safe.
+double tcpDistance(const model::ArmKinematics& model, const std::array<double, 7>& a, const std::array<double, 7>& b) {
+  const std::array<double, 16> pa = model.GetCartPose(a), pb = model.GetCartPose(b);
+  return std::hypot(pa[3] - pb[3], pa[7] - pb[7], pa[11] - pb[11]);
+}
+
+// Six axes as seven joints (the seventh 0).
 JointPoint widen(const std::array<double, 6>& q) {
   JointPoint out{};
   std::copy(q.begin(), q.end(), out.begin());
   return out;
 }
 
-// How far apart the TCP is at two sets of axes (m). Real-time safe.
-double tcpDistance(const model::ArmKinematics& model, const std::array<double, 6>& a, const std::array<double, 6>& b) {
-  const std::array<double, 16> pa = model.GetCartPose(widen(a)), pb = model.GetCartPose(widen(b));
-  return std::hypot(pa[3] - pb[3], pa[7] - pb[7], pa[11] - pb[11]);
-}
-
 // The first sample of `grid` (joints every kGridDt of plan time) the RSI session cannot follow,
-// checked at the RSI cycle (rsi::JointStream::checkSample): its index and what is wrong there
+// checked at the RSI cycle (arm::JointStream::checkSample): its index and what is wrong there
 // (problem empty when none is).
 struct GridProblem {
   size_t sample = 0;
   std::string problem;
 };
-GridProblem checkGrid(const rsi::JointStream& stream, const client::JointSamples& grid,
+GridProblem checkGrid(const arm::JointStream& stream, const client::JointSamples& grid,
                       const std::array<double, 6>& q_on) {
   const double dt = stream.cycleSeconds();
   const size_t stride = std::max<size_t>(1, size_t(std::lround(dt / kGridDt)));
@@ -135,22 +92,46 @@ GridProblem checkGrid(const rsi::JointStream& stream, const client::JointSamples
 
 }  // namespace
 
-RunReport Executor::run(arm::RsiArm& arm, const Program& program, const ExecutorOptions& options) {
-  RsiPort port(arm.stream(), arm.digitalIo(), program.has_tool ? program.tool : kIdentityPose);
-  return runOn(port, nullptr, &arm.stream(), program, options);
+RsiPort::RsiPort(arm::JointStream& stream, rsi::DigitalIo* io, const std::array<double, 16>& tool)
+    : stream_(stream), io_(io), model_(stream.spec()), tool_(tool) {
+  model_.SetCoor(tool);
 }
 
-RunReport Executor::run(arm::Arm& arm, const Program& program, const ExecutorOptions& options) {
-  if (auto* rsi = dynamic_cast<arm::RsiArm*>(&arm)) return run(*rsi, program, options);
-  if (auto* rci = dynamic_cast<arm::RciArm*>(&arm)) return run(rci->robot(), program, options);
-  throw std::invalid_argument("teach::Executor::run: an arm of neither family the executor drives (RciArm, RsiArm)");
+const model::RobotSpec& RsiPort::spec() const { return stream_.spec(); }
+
+RobotPort::Reading RsiPort::read() {
+  arm::StreamState s;
+  if (!stream_.state(s))
+    throw std::runtime_error("RSI is not running: no <Rob> datagram has arrived; start the KRL program (RSI_ON, "
+                             "RSI_MOVECORR) on the robot");
+  Reading r;
+  for (size_t i = 0; i < 6; ++i) r.q[i] = s.q[i];
+  r.tcp = model_.GetCartPose(r.q);
+  return r;
 }
 
-void Executor::runRsiMotion(const Program& program, const Instruction& in, InstructionReport& report) {
-  rsi::JointStream& stream = *stream_;
+void RsiPort::setDO(int signal, bool value) { io().setOutput(signal, value); }
+
+bool RsiPort::getDI(int signal) { return io().input(signal); }
+
+bool RsiPort::reachableBounds(std::array<double, 7>& lower, std::array<double, 7>& upper) {
+  return stream_.reachableBounds(lower, upper);
+}
+
+rsi::DigitalIo& RsiPort::io() {
+  if (!io_)
+    throw std::runtime_error("the RSI context wires no digital inputs or outputs to the PC: wire DIGIN / DIGOUT "
+                             "objects to the ETHERNET object (as resources/rsi/rci_replay.rsi.xml does), or "
+                             "remove SET_DO and WAIT_DI from the program");
+  return *io_;
+}
+
+void RsiPort::move(const Program& program, const Instruction& in, const model::ArmKinematics& model,
+                   MotionControl& control, InstructionReport& report) {
+  (void)program;  // RSI does not tell the tool: the port's is the program's
+  arm::JointStream& stream = stream_;
   const model::RobotSpec& spec = stream.spec();
-  const model::ArmKinematics model = motionModel(program, spec, port_->toolFrame());
-  const rsi::StreamState state = runningState(stream);
+  const arm::StreamState state = runningState(stream);
   std::array<double, 7> q_now{};
   for (size_t i = 0; i < 6; ++i) q_now[i] = state.q_command[i];  // where the robot is being held
 
@@ -180,11 +161,11 @@ void Executor::runRsiMotion(const Program& program, const Instruction& in, Instr
     std::snprintf(at, sizeof at, " (at t = %.3f s of the motion)", double(check.sample) * kGridDt);
     throw MotionException(check.problem + at);
   }
-  streamRsiGrid(grid, share, in.type == InstructionType::kMoveJ, model, state.session, report, nullptr);
+  streamGrid(grid, share, in.type == InstructionType::kMoveJ, model, state.session, control, report, nullptr);
 }
 
-void Executor::checkRsiPath(const PathTiming& timing, double rate_hz) {
-  const GridProblem check = checkGrid(*stream_, timing.q, runningState(*stream_).q_on);
+void RsiPort::checkPath(const PathTiming& timing, double rate_hz) {
+  const GridProblem check = checkGrid(stream_, timing.q, runningState(stream_).q_on);
   if (check.problem.empty()) return;
   const double t = timing.path_time[check.sample];
   char at[96];
@@ -192,38 +173,37 @@ void Executor::checkRsiPath(const PathTiming& timing, double rate_hz) {
   throw MotionException(at + check.problem);
 }
 
-void Executor::streamRsiPath(const Program& program, const PathTiming& timing, PathRecording& recording,
-                             InstructionReport& report) {
-  const model::ArmKinematics model = motionModel(program, stream_->spec(), port_->toolFrame());
-  streamRsiGrid(timing.q, kPathLimitShare, true, model, runningState(*stream_).session, report, &recording);
+void RsiPort::streamPath(const JointPath& path, const PathTiming& timing, const model::ArmKinematics& model,
+                         MotionControl& control, PathRecording& recording, InstructionReport& report) {
+  (void)path;  // checked in checkPath against what the session can reach
+  streamGrid(timing.q, kPathLimitShare, true, model, runningState(stream_).session, control, report, &recording);
 }
 
-void Executor::streamRsiGrid(const client::JointSamples& grid, double share, bool joint_motion,
-                             const model::ArmKinematics& model, uint32_t session, InstructionReport& report,
-                             PathRecording* recording) {
-  rsi::JointStream& stream = *stream_;
+void RsiPort::streamGrid(const client::JointSamples& grid, double share, bool joint_motion,
+                         const model::ArmKinematics& model, uint32_t session, MotionControl& control,
+                         InstructionReport& report, PathRecording* recording) {
+  arm::JointStream& stream = stream_;
   const double dt = stream.cycleSeconds();
   const double total = double(grid.size() - 1) * kGridDt;
-  TimeScaling scaling(override_.load(), safeScalingRate(share, accelOverVelocity(joint_motion, stream.spec())));
+  TimeScaling scaling(control.speedOverride(), safeScalingRate(share, accelOverVelocity(joint_motion, stream.spec())));
   const client::StallBridge::Limits limits = client::jointBridgeLimits(stream.spec(), share);
   const double braking = joint_motion ? 1.0 : kCartesianBrakingShare;
   auto planAt = [&](double t) { return samplesAt(grid, kGridDt, t); };
   double plan_time = 0, max_joint_error = 0, max_tcp_error = 0;
   uint64_t cycles = 0;
   bool stopped = false;
-  std::array<double, 6> last{};
-  for (size_t i = 0; i < 6; ++i) last[i] = grid.front()[i];
-  auto cycle = [&](const rsi::StreamState& s, std::array<double, 6>& q) -> bool {
+  std::array<double, 7> last = grid.front();
+  auto cycle = [&](const arm::ArmSample& s, std::array<double, 7>& q) -> bool {
     ++cycles;
     max_joint_error = std::max(max_joint_error, maxDifference(s.q_command, s.q));
     max_tcp_error = std::max(max_tcp_error, tcpDistance(model, s.q_command, s.q));
-    if (recording) recording->add(plan_time, widen(s.q));
+    if (recording) recording->add(plan_time, s.q);
     limitScalingAtPlan(scaling, plan_time, planAt, limits, 6, braking);
-    scaling.setTarget(scalingTarget(scaling));
+    scaling.setTarget(control.scalingTarget(scaling));
     scaling.step(dt);
     plan_time = std::min(total, plan_time + scaling.value() * dt);
-    storeMotionFraction(total > 0 ? plan_time / total : 1.0);
-    if (stoppedHere(scaling)) {
+    control.storeFraction(total > 0 ? plan_time / total : 1.0);
+    if (control.stoppedHere(scaling)) {
       stopped = true;
       q = last;
       return true;
@@ -243,11 +223,11 @@ void Executor::streamRsiGrid(const client::JointSamples& grid, double share, boo
     report.message = "stopped by the operator";
   }
   // Settled: the actual axes have caught up with the last command.
-  rsi::StreamState state;
+  arm::StreamState state;
   settle(
       [&] {
         stream.state(state);
-        const double error = maxDifference(state.q_command, state.q);
+        const double error = maxDifference(widen(state.q_command), widen(state.q));
         return SettleReading{error < kSettleTolerance, error, state.cycles};
       },
       dt, report);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// rsi::JointStream (joint_stream.h): joint commands as AXISCORR corrections, and the checks before a
+// arm::JointStream (joint_stream.h): joint commands as AXISCORR corrections, and the checks before a
 // motion is streamed.
-#include "rsi/joint_stream.h"
+#include "arm/joint_stream.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,11 +10,14 @@
 #include <thread>
 
 
-namespace xmate::rsi {
+namespace xmate::arm {
+
+using rsi::Correction;
+using rsi::Link;
+using rsi::RobDecoder;
 namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
-constexpr double kKukaDefaultLimitDeg = 5.0;  // AXISCORR's limits when the context does not set them
 
 std::string fmt(const char* format, double a, double b = 0, double c = 0) {
   char buffer[160];
@@ -24,38 +27,7 @@ std::string fmt(const char* format, double a, double b = 0, double c = 0) {
 
 }  // namespace
 
-AxisCorrectionLimits axisCorrectionLimits(const Context& context) {
-  const Object* corr = nullptr;
-  const Object* monitor = nullptr;
-  for (const Object& object : context.objects) {
-    if (!corr && object.type == "AXISCORR") corr = &object;
-    if (!monitor && object.type == "AXISCORRMON") monitor = &object;
-  }
-  if (!corr)
-    throw ConfigError(context.path + ": the context has no AXISCORR object, so the PC cannot move the robot by axis "
-                      "corrections; add one in RSI Visual, wired to the ETHERNET object's outputs 1..6");
-  AxisCorrectionLimits limits;
-  for (size_t i = 0; i < 6; ++i) {
-    const std::string axis = "A" + std::to_string(i + 1);
-    limits.lower[i] = numberParameter(context, *corr, "LowerLim" + axis, -kKukaDefaultLimitDeg) / kDeg;
-    limits.upper[i] = numberParameter(context, *corr, "UpperLim" + axis, kKukaDefaultLimitDeg) / kDeg;
-    limits.lower_by[i] = corr->id + "'s LowerLim" + axis;
-    limits.upper_by[i] = corr->id + "'s UpperLim" + axis;
-    if (!monitor || !monitor->parameter("Max" + axis)) continue;
-    const double max = std::abs(numberParameter(context, *monitor, "Max" + axis, 0)) / kDeg;
-    if (max < limits.upper[i]) {
-      limits.upper[i] = max;
-      limits.upper_by[i] = monitor->id + "'s Max" + axis;
-    }
-    if (-max > limits.lower[i]) {
-      limits.lower[i] = -max;
-      limits.lower_by[i] = monitor->id + "'s Max" + axis;
-    }
-  }
-  return limits;
-}
-
-JointStream::JointStream(Link& link, const model::RobotSpec& spec, const AxisCorrectionLimits& limits)
+JointStream::JointStream(Link& link, const model::RobotSpec& spec, const rsi::AxisCorrectionLimits& limits)
     : link_(link), spec_(spec), limits_(limits), cycle_s_(link.options().cycle_ms * 1e-3) {
   for (int i = 0; i < 6; ++i) {
     const std::string axis = "A" + std::to_string(i + 1);
@@ -90,10 +62,16 @@ Correction JointStream::onCycle(const RobDecoder& rob) {
   // motion_ and then waiting for in_motion_ to fall (both sequentially consistent, so either this
   // thread sees the cleared pointer or run() sees the flag).
   in_motion_.store(true);
-  CycleMotion* motion = motion_.load();
+  JointMotion* motion = motion_.load();
   if (motion && motion_session_.load() == now_.session) {  // never into another RSI session
-    std::array<double, 6> q{};
-    const bool last = motion->command(now_, q);
+    sample_.cycle = now_.cycles;
+    sample_.session = now_.session;
+    for (size_t i = 0; i < 6; ++i) {
+      sample_.q[i] = now_.q[i];
+      sample_.q_command[i] = now_.q_command[i];  // the command of the cycle before
+    }
+    std::array<double, 7> q{};
+    const bool last = motion->command(sample_, q);
     for (size_t i = 0; i < 6; ++i) correction_[i] = q[i] - now_.q_on[i];
     if (last) {
       motion_.store(nullptr);
@@ -111,7 +89,7 @@ Correction JointStream::onCycle(const RobDecoder& rob) {
   return c;
 }
 
-void JointStream::run(CycleMotion& motion, std::chrono::milliseconds wait_for_robot, uint32_t planned_in) {
+void JointStream::run(JointMotion& motion, std::chrono::milliseconds wait_for_robot, uint32_t planned_in) {
   const auto deadline = std::chrono::steady_clock::now() + wait_for_robot;
   StreamState s;
   while (!link_.receiving() || !state(s)) {
@@ -190,4 +168,4 @@ bool JointStream::reachableBounds(std::array<double, 7>& lower, std::array<doubl
   return true;
 }
 
-}  // namespace xmate::rsi
+}  // namespace xmate::arm
